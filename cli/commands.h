@@ -1,0 +1,16 @@
+// The subcommands of gibench. Each registers its options on the app and returns the function
+// that runs it; the command line stays thin: it parses, calls the layers, prints.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace gib::cli {
+
+using CommandRunner = std::function<int()>;
+
+CommandRunner addListCommand(CLI::App& app);
+CommandRunner addRenderCommand(CLI::App& app);
+
+}  // namespace gib::cli

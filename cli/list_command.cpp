@@ -1,0 +1,32 @@
+#include "cli/commands.h"
+#include "common/input_error.h"
+#include "scene/builtin_scenes.h"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace gib::cli {
+
+CommandRunner addListCommand(CLI::App& app) {
+  CLI::App* list = app.add_subcommand("list", "List scenes, techniques, metrics or suites");
+  auto what = std::make_shared<std::string>();
+  list->add_option("what", *what, "scenes | techniques")->required();
+  return [what] {
+    if (*what == "scenes") {
+      for (const scene::BuiltinSceneInfo& info : scene::builtinScenes())
+        fmt::print("{:<10} {}\n", info.name, info.description);
+      fmt::print("{:<10} {}\n", "FILE.toml", "a scene file (TOML referencing OBJ meshes)");
+      return 0;
+    }
+    if (*what == "techniques") {
+      fmt::print("{:<10} {}\n", "reference",
+                 "Embree path tracer (ground truth); options: --spp --seed --min-bounces "
+                 "--max-bounces --checkpoints --threads");
+      return 0;
+    }
+    throw InputError(fmt::format("cannot list '{}'; choose scenes or techniques", *what));
+  };
+}
+
+}  // namespace gib::cli

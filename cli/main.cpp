@@ -1,0 +1,49 @@
+// gibench: the command line of GI Bench (DESIGN.md, "Command line contract").
+// Exit codes: 0 success, 1 a regression found (diff), 2 bad input, 3 an internal failure.
+#include "cli/commands.h"
+#include "common/input_error.h"
+#include "gib/version.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <string>
+
+int main(int argc, char** argv) {
+  CLI::App app{"gibench: validation and benchmark harness for real-time global illumination",
+               "gibench"};
+  app.set_version_flag("--version", std::string(gib::kVersion));
+  app.require_subcommand(1);
+  std::map<CLI::App*, gib::cli::CommandRunner> runners;
+  auto add = [&](gib::cli::CommandRunner (*adder)(CLI::App&), const char* name) {
+    gib::cli::CommandRunner runner = adder(app);
+    runners[app.get_subcommand(name)] = std::move(runner);
+  };
+  add(&gib::cli::addListCommand, "list");
+  add(&gib::cli::addRenderCommand, "render");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // One line naming the problem and where to look, exit code 2 (DESIGN.md, "Errors").
+    fmt::print(stderr, "gibench: {}; see `gibench --help`\n", e.what());
+    return 2;
+  }
+
+  try {
+    for (CLI::App* sub : app.get_subcommands()) return runners.at(sub)();
+    return 2;
+  } catch (const gib::InputError& e) {
+    fmt::print(stderr, "gibench: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "gibench: internal error: {}\n", e.what());
+    return 3;
+  }
+}

@@ -1,0 +1,263 @@
+#include "image/exr_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <memory>
+#include <stdexcept>
+#include <system_error>
+
+#include "common/input_error.h"
+#include "image/atomic_write.h"
+
+namespace gib::image {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Channel suffixes by channel count; the reader recognises the same sets.
+constexpr std::array<std::array<std::string_view, 4>, 5> kSuffixes = {{
+    {},
+    {"Y"},
+    {"Y", "A"},
+    {"R", "G", "B"},
+    {"R", "G", "B", "A"},
+}};
+
+// See the Metadata comment in exr_io.h.
+bool isMetadataKey(std::string_view key) {
+  const std::size_t slash = key.find('/');
+  return slash != std::string_view::npos && slash > 0 && slash + 1 < key.size() &&
+         key.substr(0, slash).find(':') == std::string_view::npos;
+}
+
+std::string channelName(const std::string& layer, std::string_view suffix) {
+  return layer.empty() ? std::string(suffix) : layer + "." + std::string(suffix);
+}
+
+// Writing problems are bugs in the caller, not bad user input.
+void checkLayers(const std::vector<Layer>& layers) {
+  if (layers.empty()) throw std::invalid_argument("writeExr: no layers to write");
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const Layer& layer = layers[i];
+    const int channels = layer.image.channels();
+    if (channels < 1 || channels > 4)
+      throw std::invalid_argument("writeExr: layer '" + layer.name + "' has " +
+                                  std::to_string(channels) + " channels; 1 to 4 are supported");
+    if (layer.image.width() != layers[0].image.width() ||
+        layer.image.height() != layers[0].image.height())
+      throw std::invalid_argument("writeExr: layer '" + layer.name +
+                                  "' differs in size from layer '" + layers[0].name + "'");
+    if (!layer.name.empty() && layer.name.back() == '.')
+      throw std::invalid_argument("writeExr: layer name '" + layer.name + "' ends with '.'");
+    for (std::size_t j = 0; j < i; ++j)
+      if (layers[j].name == layer.name)
+        throw std::invalid_argument("writeExr: two layers named '" + layer.name + "'");
+  }
+}
+
+void checkMetadata(const Metadata& metadata) {
+  // OpenEXR limits attribute names to 255 bytes.
+  constexpr std::size_t kMaxKeyLength = 255;
+  for (const auto& [key, value] : metadata) {
+    if (!isMetadataKey(key) || key.size() > kMaxKeyLength)
+      throw std::invalid_argument("writeExr: metadata key '" + key +
+                                  "' is not of the form '<namespace>/<name>'");
+    if (value.empty() || value.find('\0') != std::string::npos)
+      throw std::invalid_argument("writeExr: metadata value of '" + key +
+                                  "' is empty or contains NUL");
+  }
+}
+
+OIIO::ImageSpec makeSpec(const std::vector<Layer>& layers, const Metadata& metadata) {
+  OIIO::ImageSpec spec(layers[0].image.width(), layers[0].image.height(), 0, OIIO::TypeFloat);
+  for (const Layer& layer : layers)
+    for (int c = 0; c < layer.image.channels(); ++c)
+      spec.channelnames.push_back(channelName(layer.name, kSuffixes[layer.image.channels()][c]));
+  spec.nchannels = int(spec.channelnames.size());
+  spec.alpha_channel = -1;
+  spec.attribute("compression", "zip");
+  // OpenImageIO stamps the current time into capDate unless DateTime is set. An empty capDate
+  // (which readers, OpenImageIO included, skip) keeps the file free of time: equal inputs give
+  // byte-identical files (DESIGN.md, "Randomness").
+  spec.attribute("DateTime", "");
+  for (const auto& [key, value] : metadata) spec.attribute(key, value);
+  return spec;
+}
+
+std::vector<float> interleave(const std::vector<Layer>& layers, int total_channels) {
+  const std::size_t pixels = layers[0].image.pixelCount();
+  std::vector<float> values(pixels * std::size_t(total_channels));
+  std::size_t first = 0;
+  for (const Layer& layer : layers) {
+    const std::span<const float> source = layer.image.data();
+    const auto channels = std::size_t(layer.image.channels());
+    for (std::size_t p = 0; p < pixels; ++p)
+      std::copy_n(source.data() + p * channels, channels,
+                  values.data() + p * std::size_t(total_channels) + first);
+    first += channels;
+  }
+  return values;
+}
+
+// OpenImageIO's messages may span lines; ours are one line (DESIGN.md, "Errors").
+std::string oneLine(std::string message) {
+  while (!message.empty() && message.back() == '\n') message.pop_back();
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  return message;
+}
+
+// Reading.
+
+[[noreturn]] void throwUnreadable(const fs::path& path, const std::string& reason) {
+  throw InputError("cannot read '" + path.string() + "': " + oneLine(reason) +
+                   "; check the path and that the file is a complete OpenEXR image");
+}
+
+// Channels of one layer in the order the Image stores them.
+struct LayerChannels {
+  std::string name;
+  std::vector<int> indices;  // Into the file's channels; one index may repeat (Y as grey).
+};
+
+std::string prefixOf(std::string_view channel) {
+  const std::size_t dot = channel.rfind('.');
+  return dot == std::string_view::npos ? std::string() : std::string(channel.substr(0, dot));
+}
+
+// Groups the file's channels into layers (rules in exr_io.h): R,G,B[,A] of a prefix, or a prefix
+// with only Y[,A], form one layer; any other channel becomes a one-channel layer named by its full
+// channel name.
+std::vector<LayerChannels> groupChannels(const std::vector<std::string>& names) {
+  std::vector<std::string> prefixes;
+  for (const std::string& name : names)
+    if (std::find(prefixes.begin(), prefixes.end(), prefixOf(name)) == prefixes.end())
+      prefixes.push_back(prefixOf(name));
+  // The main layer first, the others in file order.
+  std::stable_partition(prefixes.begin(), prefixes.end(),
+                        [](const std::string& prefix) { return prefix.empty(); });
+
+  std::vector<LayerChannels> layers;
+  std::vector<bool> used(names.size(), false);
+  for (const std::string& prefix : prefixes) {
+    auto find = [&](std::string_view suffix) {
+      for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == channelName(prefix, suffix)) return int(i);
+      return -1;
+    };
+    const int r = find("R"), g = find("G"), b = find("B"), a = find("A"), y = find("Y");
+    const auto size = std::count_if(names.begin(), names.end(), [&](const std::string& name) {
+      return prefixOf(name) == prefix;
+    });
+    LayerChannels layer{prefix, {}};
+    if (r >= 0 && g >= 0 && b >= 0) {
+      layer.indices = {r, g, b};
+    } else if (y >= 0 && size == (a >= 0 ? 2 : 1)) {
+      // Luminance: the main layer is always RGB, so it becomes grey.
+      layer.indices = prefix.empty() ? std::vector<int>{y, y, y} : std::vector<int>{y};
+    } else {
+      continue;
+    }
+    if (a >= 0) layer.indices.push_back(a);
+    for (int index : layer.indices) used[std::size_t(index)] = true;
+    layers.push_back(std::move(layer));
+  }
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (!used[i]) layers.push_back({names[i], {int(i)}});
+  return layers;
+}
+
+// Copies the data window's pixels (all channels interleaved) into per-layer images of the
+// display window's size.
+std::vector<Layer> scatter(const OIIO::ImageSpec& spec, const std::vector<float>& values,
+                           const std::vector<LayerChannels>& groups) {
+  std::vector<Layer> layers;
+  for (const LayerChannels& group : groups) {
+    Image image(spec.full_width, spec.full_height, int(group.indices.size()));
+    const int x0 = std::max(spec.x, spec.full_x);
+    const int x1 = std::min(spec.x + spec.width, spec.full_x + spec.full_width);
+    const int y0 = std::max(spec.y, spec.full_y);
+    const int y1 = std::min(spec.y + spec.height, spec.full_y + spec.full_height);
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        const float* source = values.data() + (std::size_t(y - spec.y) * std::size_t(spec.width) +
+                                               std::size_t(x - spec.x)) *
+                                                  std::size_t(spec.nchannels);
+        float* target = image.pixel(x - spec.full_x, y - spec.full_y);
+        for (std::size_t c = 0; c < group.indices.size(); ++c) target[c] = source[group.indices[c]];
+      }
+    }
+    layers.push_back({group.name, std::move(image)});
+  }
+  return layers;
+}
+
+Metadata readMetadata(const OIIO::ImageSpec& spec) {
+  Metadata metadata;
+  for (const OIIO::ParamValue& attribute : spec.extra_attribs) {
+    const std::string name = attribute.name().string();
+    if (attribute.type() == OIIO::TypeString && isMetadataKey(name))
+      metadata[name] = attribute.get_string();
+  }
+  return metadata;
+}
+
+}  // namespace
+
+const Image* ExrFile::findLayer(std::string_view name) const {
+  for (const Layer& layer : layers)
+    if (layer.name == name) return &layer.image;
+  return nullptr;
+}
+
+const Image& ExrFile::rgb() const {
+  const Image* image = findLayer("");
+  if (!image)
+    throw InputError(
+        "the EXR file has no R, G, B (or Y) channels; write the image with RGB "
+        "channels or name the layer to use");
+  return *image;
+}
+
+void writeExr(const fs::path& path, const std::vector<Layer>& layers, const Metadata& metadata) {
+  checkLayers(layers);
+  checkMetadata(metadata);
+  const OIIO::ImageSpec spec = makeSpec(layers, metadata);
+  const std::vector<float> values = interleave(layers, spec.nchannels);
+
+  detail::writeAtomically(path, [&](const fs::path& temporary) {
+    // Named format: the temporary file's name does not end in ".exr".
+    std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create("openexr");
+    if (!output) throw std::logic_error("OpenImageIO has no OpenEXR writer");
+    if (!output->open(temporary.string(), spec) ||
+        !output->write_image(OIIO::TypeFloat, values.data()) || !output->close())
+      throw InputError("cannot write '" + path.string() + "': " + oneLine(output->geterror()) +
+                       "; check that the directory is writable and the disk has space");
+  });
+}
+
+ExrFile readExr(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) throwUnreadable(path, "no such file");
+  if (fs::is_directory(status)) throwUnreadable(path, "it is a directory");
+
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create("openexr");
+  if (!input) throw std::logic_error("OpenImageIO has no OpenEXR reader");
+  OIIO::ImageSpec spec;
+  if (!input->open(path.string(), spec)) throwUnreadable(path, input->geterror());
+  if (spec.deep) throwUnreadable(path, "deep EXR images are not supported");
+
+  std::vector<float> values(std::size_t(spec.width) * std::size_t(spec.height) *
+                            std::size_t(spec.nchannels));
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, values.data()))
+    throwUnreadable(path, input->geterror());
+
+  ExrFile file;
+  file.layers = scatter(spec, values, groupChannels(spec.channelnames));
+  file.metadata = readMetadata(spec);
+  return file;
+}
+
+}  // namespace gib::image

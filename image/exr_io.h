@@ -1,0 +1,57 @@
+// OpenEXR files of float32 images with named layers and string metadata: the format of every
+// measured image (DESIGN.md, "Conventions", Images).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "image/image.h"
+
+namespace gib::image {
+
+// String attributes of the file header, e.g. {"gibench/scene_hash", "3f…"}. Keys have the form
+// "<namespace>/<name>": the namespace is non-empty and has no ':'. That keeps them apart from the
+// names OpenEXR and OpenImageIO give a meaning to (capDate, comments, oiio:*, …), so they are
+// stored verbatim as EXR string attributes and read back exactly. Values are non-empty and
+// contain no NUL (OpenImageIO drops empty string attributes when reading).
+using Metadata = std::map<std::string, std::string>;
+
+// A named group of channels. By channel count the main layer (name "") is stored as Y; Y, A;
+// R, G, B; or R, G, B, A; layer "variance" as variance.R, variance.G, variance.B, and so on.
+struct Layer {
+  std::string name;
+  Image image;
+};
+
+struct ExrFile {
+  std::vector<Layer> layers;
+  Metadata metadata;
+
+  // nullptr when the file has no such layer.
+  const Image* findLayer(std::string_view name) const;
+  // The main layer; throws gib::InputError when the file has none.
+  const Image& rgb() const;
+};
+
+// Writes all layers into one scanline EXR: float32 channels, ZIP compression, the metadata as
+// string attributes and no time stamp, so that equal inputs give byte-identical files. Layers
+// must share width and height, have 1, 3 or 4 channels and distinct names; metadata must follow
+// the rules above (std::invalid_argument otherwise: a bug in the caller). The file is written
+// beside `path` under a temporary name and renamed, so a failure leaves no partial file; a
+// missing or unwritable directory throws gib::InputError.
+void writeExr(const std::filesystem::path& path, const std::vector<Layer>& layers,
+              const Metadata& metadata);
+
+// Reads the first part of any EXR file. Channels are grouped by the prefix before their last '.'
+// (no prefix: the main layer). A prefix's R, G, B [, A] form its layer, and so do Y [, A] when
+// the prefix has no other channels (in the main layer Y becomes grey R = G = B: a luminance file
+// gives an RGB image). Every other channel becomes a one-channel layer named by its full channel
+// name ("Z", "normal.X"). Half and uint channels are converted to float; pixels outside the data
+// window are 0. Metadata holds the string attributes whose names follow the key rule above. A
+// missing, unreadable, truncated, deep or non-EXR file throws gib::InputError.
+ExrFile readExr(const std::filesystem::path& path);
+
+}  // namespace gib::image

@@ -1,0 +1,130 @@
+#include "reference/embree_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <stdexcept>
+
+namespace gib::ref {
+
+namespace {
+
+void onEmbreeError(void*, RTCError code, const char* message) {
+  // Embree calls this from the failing API call; throwing through C code is undefined, so we
+  // record nothing here and let the caller's check below report it. Print for diagnosis.
+  fmt::print(stderr, "embree error {}: {}\n", int(code), message ? message : "");
+}
+
+void check(RTCDevice device, const char* what) {
+  RTCError code = rtcGetDeviceError(device);
+  if (code != RTC_ERROR_NONE)
+    throw std::runtime_error(fmt::format("Embree failed in {} (error {})", what, int(code)));
+}
+
+}  // namespace
+
+struct EmbreeScene::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+};
+
+EmbreeScene::EmbreeScene(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device) throw std::runtime_error("cannot create an Embree device");
+  rtcSetDeviceErrorFunction(impl_->device, onEmbreeError, nullptr);
+  impl_->scene = rtcNewScene(impl_->device);
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+
+  float extent = 0;
+  for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    const scene::Mesh& mesh = scene.meshes[m];
+    RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree reads vertices with 16-byte loads: rtcSetNewGeometryBuffer pads the buffer for us.
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+        std::max<std::size_t>(mesh.positions.size(), 1)));
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+      for (int k = 0; k < 3; ++k) {
+        vertices[3 * i + k] = mesh.positions[i][k];
+        extent = std::max(extent, std::abs(mesh.positions[i][k]));
+      }
+    }
+    auto* indices = static_cast<std::uint32_t*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(std::uint32_t), mesh.triangles.size()));
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+      for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.triangles[i][k];
+    rtcCommitGeometry(geometry);
+    // Geometry ids are assigned in order, so a hit's geomID is the mesh index.
+    rtcAttachGeometryByID(impl_->scene, geometry, m);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(impl_->scene);
+  check(impl_->device, "building the scene");
+  // Hit points carry an error of a few ulps of their largest coordinate; 1e-5 of the extent is
+  // ~100 ulps, far above that and far below any feature of our scenes.
+  ray_epsilon_ = std::max(1e-5f * extent, 1e-6f);
+}
+
+EmbreeScene::~EmbreeScene() {
+  if (impl_->scene) rtcReleaseScene(impl_->scene);
+  if (impl_->device) rtcReleaseDevice(impl_->device);
+}
+
+Hit EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& direction, float t_near,
+                           float t_far) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = origin.x;
+  rh.ray.org_y = origin.y;
+  rh.ray.org_z = origin.z;
+  rh.ray.dir_x = direction.x;
+  rh.ray.dir_y = direction.y;
+  rh.ray.dir_z = direction.z;
+  rh.ray.tnear = t_near;
+  rh.ray.tfar = t_far;
+  rh.ray.mask = 0xffffffffu;
+  rh.ray.time = 0.0f;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &context, &rh);
+  Hit hit;
+  if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+    hit.t = rh.ray.tfar;
+    hit.mesh = rh.hit.geomID;
+    hit.triangle = rh.hit.primID;
+  }
+  return hit;
+}
+
+bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,
+                           float t_far) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray;
+  ray.org_x = origin.x;
+  ray.org_y = origin.y;
+  ray.org_z = origin.z;
+  ray.dir_x = direction.x;
+  ray.dir_y = direction.y;
+  ray.dir_z = direction.z;
+  ray.tnear = t_near;
+  ray.tfar = t_far;
+  ray.mask = 0xffffffffu;
+  ray.time = 0.0f;
+  ray.flags = 0;
+  rtcOccluded1(impl_->scene, &context, &ray);
+  // Embree marks an occluded ray by setting tfar to −inf.
+  return ray.tfar < 0.0f;
+}
+
+std::string embreeVersion() {
+  return fmt::format("{}.{}.{}", RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
+}
+
+}  // namespace gib::ref

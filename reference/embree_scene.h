@@ -1,0 +1,52 @@
+// The scene's triangles in an Embree 3 BVH, and the two queries the tracer needs. Embree is
+// included only in reference/*.cpp (DESIGN.md); this header hides it.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace gib::ref {
+
+struct Hit {
+  float t = std::numeric_limits<float>::infinity();
+  std::uint32_t mesh = 0;      // index into Scene::meshes
+  std::uint32_t triangle = 0;  // index into that mesh's triangles
+  bool valid() const { return t < std::numeric_limits<float>::infinity(); }
+};
+
+class EmbreeScene {
+ public:
+  // Builds the BVH (robust mode, so that closed meshes are watertight). Embree errors go through
+  // one device callback and end up as std::runtime_error.
+  explicit EmbreeScene(const scene::Scene& scene);
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  // Closest hit along origin + t·direction for t in (t_near, t_far); `direction` need not be unit.
+  Hit intersect(const glm::vec3& origin, const glm::vec3& direction, float t_near = 0.0f,
+                float t_far = std::numeric_limits<float>::infinity()) const;
+  // Whether anything lies along the segment (t_near, t_far).
+  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,
+                float t_far) const;
+
+  // An offset for spawned rays that keeps them off the surface they leave: relative to the
+  // scene's extent, since float error in a hit point grows with its coordinates.
+  float rayEpsilon() const { return ray_epsilon_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  float ray_epsilon_ = 1e-4f;
+};
+
+// The library version ("3.13.5"), recorded in outputs.
+std::string embreeVersion();
+
+}  // namespace gib::ref

@@ -1,0 +1,60 @@
+#include "scene/builtin_scenes.h"
+
+#include "common/input_error.h"
+#include "scene/scene_file.h"
+
+#include <filesystem>
+#include <fmt/format.h>
+
+namespace gib::scene {
+
+namespace {
+
+struct BuiltinScene {
+  BuiltinSceneInfo info;
+  Scene (*make)();
+};
+
+const std::vector<BuiltinScene>& registry() {
+  static const std::vector<BuiltinScene> scenes = {
+      {{"cornell",
+        "the Cornell box as published by the Cornell Program of Computer Graphics (mm, spectral "
+        "reflectances converted to Rec.709)"},
+       &makeCornellBox},
+      {{"furnace",
+        "inside a closed sphere with albedo 0.5 and emission 0.5: every pixel's exact radiance "
+        "is 1.0"},
+       &makeFurnace},
+  };
+  return scenes;
+}
+
+}  // namespace
+
+const std::vector<BuiltinSceneInfo>& builtinScenes() {
+  static const std::vector<BuiltinSceneInfo> infos = [] {
+    std::vector<BuiltinSceneInfo> result;
+    for (const BuiltinScene& s : registry()) result.push_back(s.info);
+    return result;
+  }();
+  return infos;
+}
+
+Scene loadScene(std::string_view name_or_path) {
+  for (const BuiltinScene& s : registry())
+    if (s.info.name == name_or_path) {
+      Scene scene = s.make();
+      validateScene(scene);
+      return scene;
+    }
+  std::filesystem::path path(name_or_path);
+  if (path.extension() == ".toml") return loadSceneFile(path);
+  std::string names;
+  for (const BuiltinScene& s : registry()) names += (names.empty() ? "" : ", ") + s.info.name;
+  throw InputError(fmt::format(
+      "unknown scene '{}'; use a built-in scene ({}; see `gibench list scenes`) or the path of a "
+      ".toml scene file",
+      name_or_path, names));
+}
+
+}  // namespace gib::scene

@@ -1,0 +1,151 @@
+#include "scene/scene.h"
+
+#include "common/content_hash.h"
+#include "common/input_error.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace gib::scene {
+
+std::size_t Scene::triangleCount() const {
+  std::size_t count = 0;
+  for (const Mesh& mesh : meshes) count += mesh.triangles.size();
+  return count;
+}
+
+bool Scene::hasEmissiveTriangles() const {
+  for (const Mesh& mesh : meshes)
+    if (!mesh.triangles.empty() && materials.at(mesh.material).isEmissive()) return true;
+  return false;
+}
+
+namespace {
+
+bool isFinite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool isNonNegative(const glm::vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw InputError(message);
+}
+
+void validateRgb(const Rgb& value, const std::string& what) {
+  require(isFinite(value) && isNonNegative(value),
+          fmt::format("{} must be finite and non-negative, got ({}, {}, {})", what, value.r,
+                      value.g, value.b));
+}
+
+void validateMaterial(const Material& m) {
+  const std::string where = fmt::format("material '{}'", m.name);
+  validateRgb(m.diffuse, where + " diffuse");
+  validateRgb(m.specular, where + " specular");
+  validateRgb(m.emission, where + " emission");
+  require(std::isfinite(m.exponent) && m.exponent >= 0,
+          fmt::format("{} exponent must be finite and >= 0, got {}", where, m.exponent));
+  // Reflecting more than arrives would make the path tracer diverge; every loader must stop it.
+  for (int c = 0; c < 3; ++c)
+    require(m.diffuse[c] + m.specular[c] <= 1.0f + 1e-6f,
+            fmt::format("{} reflects more energy than it receives (diffuse + specular = {} > 1 in "
+                        "channel {}); lower diffuse or specular",
+                        where, m.diffuse[c] + m.specular[c], c));
+}
+
+void validateMesh(const Scene& scene, const Mesh& mesh) {
+  const std::string where = fmt::format("mesh '{}'", mesh.name);
+  require(mesh.material < scene.materials.size(),
+          fmt::format("{} refers to material index {}, but the scene has {} materials", where,
+                      mesh.material, scene.materials.size()));
+  for (const glm::vec3& p : mesh.positions)
+    require(isFinite(p), fmt::format("{} has a non-finite vertex position", where));
+  for (const glm::uvec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      require(t[k] < mesh.positions.size(),
+              fmt::format("{} has a triangle with vertex index {} but only {} vertices", where,
+                          t[k], mesh.positions.size()));
+}
+
+void validateCamera(const Camera& c) {
+  require(isFinite(c.position) && isFinite(c.look_at) && isFinite(c.up),
+          "camera position, look_at and up must be finite");
+  glm::vec3 forward = c.look_at - c.position;
+  require(glm::length(forward) > 0, "camera look_at equals its position; move one of them");
+  require(glm::length(glm::cross(forward, c.up)) > 1e-6f * glm::length(forward) * glm::length(c.up),
+          "camera up is parallel to the viewing direction; choose another up vector");
+  require(c.vertical_fov_deg > 0 && c.vertical_fov_deg < 180,
+          fmt::format("camera vertical_fov_deg must be in (0, 180), got {}", c.vertical_fov_deg));
+}
+
+}  // namespace
+
+void validateScene(const Scene& scene) {
+  for (const Material& m : scene.materials) validateMaterial(m);
+  for (const Mesh& mesh : scene.meshes) validateMesh(scene, mesh);
+  for (const SpotLight& l : scene.spot_lights) {
+    require(isFinite(l.position) && isFinite(l.direction) && glm::length(l.direction) > 0,
+            "spot light position and direction must be finite and the direction non-zero");
+    validateRgb(l.intensity, "spot light intensity");
+    require(l.cone_angle_deg > 0 && l.cone_angle_deg <= 180,
+            fmt::format("spot light cone_angle_deg must be in (0, 180], got {}", l.cone_angle_deg));
+    require(l.falloff_exponent >= 0 && std::isfinite(l.falloff_exponent),
+            "spot light falloff_exponent must be finite and >= 0");
+  }
+  for (const DirectionalLight& l : scene.directional_lights) {
+    require(isFinite(l.direction) && glm::length(l.direction) > 0,
+            "directional light direction must be finite and non-zero");
+    validateRgb(l.irradiance, "directional light irradiance");
+  }
+  validateRgb(scene.sky_radiance, "sky radiance");
+  validateCamera(scene.camera);
+  require(scene.default_width > 0 && scene.default_height > 0,
+          "scene default image size must be positive");
+}
+
+std::string hashScene(const Scene& scene) {
+  // Field order and tags are part of the canonical form: change them only with a new tag
+  // version, since stored references are keyed by this hash.
+  ContentHasher h;
+  h.addString("gibench-scene-v1");
+  auto addVec = [&](const glm::vec3& v) { h.addFloats({&v.x, 3}); };
+  h.addU64(scene.materials.size());
+  for (const Material& m : scene.materials) {
+    h.addU64(static_cast<std::uint64_t>(m.type));
+    addVec(m.diffuse);
+    addVec(m.specular);
+    h.addFloat(m.exponent);
+    addVec(m.emission);
+  }
+  h.addU64(scene.meshes.size());
+  for (const Mesh& mesh : scene.meshes) {
+    h.addU64(mesh.material);
+    h.addU64(mesh.positions.size());
+    for (const glm::vec3& p : mesh.positions) addVec(p);
+    h.addU64(mesh.triangles.size());
+    for (const glm::uvec3& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k) h.addU64(t[k]);
+  }
+  h.addU64(scene.spot_lights.size());
+  for (const SpotLight& l : scene.spot_lights) {
+    addVec(l.position);
+    addVec(l.direction);
+    addVec(l.intensity);
+    h.addFloat(l.cone_angle_deg);
+    h.addFloat(l.falloff_exponent);
+  }
+  h.addU64(scene.directional_lights.size());
+  for (const DirectionalLight& l : scene.directional_lights) {
+    addVec(l.direction);
+    addVec(l.irradiance);
+  }
+  addVec(scene.sky_radiance);
+  addVec(scene.camera.position);
+  addVec(scene.camera.look_at);
+  addVec(scene.camera.up);
+  h.addFloat(scene.camera.vertical_fov_deg);
+  return h.hexDigest();
+}
+
+}  // namespace gib::scene

@@ -1,0 +1,139 @@
+// `gibench render` as a user runs it: outputs, metadata, determinism across --threads, and one
+// clear line with exit code 2 (and no output file) for every kind of bad input.
+#include "image/exr_io.h"
+#include "support/run_command.h"
+#include "support/temp_dir.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace gib::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> renderArgs(const fs::path& out, std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"render", "--scene",  "cornell",     "--width", "24",
+                                   "--height", "16",     "--spp",       "4",       "--out",
+                                   out.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+TEST(RenderCommand, WritesExrWithLayersAndMetadataAndPng) {
+  TempDir dir;
+  CommandResult r = runGibench(renderArgs(dir / "cornell.exr", {"--checkpoints"}), dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "cornell.png"));
+  EXPECT_NE(r.out.find("cornell.exr"), std::string::npos);
+  EXPECT_NE(r.out.find("cornell.png"), std::string::npos);
+  image::ExrFile exr = image::readExr(dir / "cornell.exr");
+  EXPECT_EQ(exr.rgb().width(), 24);
+  EXPECT_EQ(exr.rgb().height(), 16);
+  for (const char* layer : {"variance", "direct", "indirect"})
+    EXPECT_NE(exr.findLayer(layer), nullptr) << layer;
+  for (const char* key : {"gibench/version", "gibench/scene_hash", "gibench/spp", "gibench/seed",
+                          "gibench/min_bounces", "gibench/max_bounces", "gibench/render_seconds",
+                          "gibench/rays_per_second", "gibench/technique"})
+    EXPECT_TRUE(exr.metadata.count(key)) << key;
+  EXPECT_EQ(exr.metadata["gibench/spp"], "4");
+  EXPECT_EQ(exr.metadata["gibench/scene"], "cornell");
+  // Checkpoints at 1, 2 and 4 spp.
+  for (const char* name : {"cornell.spp0001.exr", "cornell.spp0002.exr", "cornell.spp0004.exr"})
+    EXPECT_TRUE(fs::exists(dir / name)) << name;
+}
+
+TEST(RenderCommand, PixelsAreBitIdenticalWithOneOrTwoThreads) {
+  TempDir dir;
+  ASSERT_EQ(runGibench(renderArgs(dir / "a.exr", {"--threads", "1"}), dir.path()).exit_code, 0);
+  ASSERT_EQ(runGibench(renderArgs(dir / "b.exr", {"--threads", "2"}), dir.path()).exit_code, 0);
+  image::ExrFile a = image::readExr(dir / "a.exr");
+  image::ExrFile b = image::readExr(dir / "b.exr");
+  ASSERT_EQ(a.layers.size(), b.layers.size());
+  for (const image::Layer& layer : a.layers) {
+    const image::Image* other = b.findLayer(layer.name);
+    ASSERT_NE(other, nullptr);
+    ASSERT_TRUE(layer.image.sameSize(*other));
+    EXPECT_EQ(std::memcmp(layer.image.data().data(), other->data().data(),
+                          layer.image.data().size_bytes()),
+              0)
+        << "layer '" << layer.name << "'";
+  }
+  // Everything but the timing keys is identical too.
+  for (auto& [key, value] : a.metadata)
+    if (key != "gibench/render_seconds" && key != "gibench/rays_per_second")
+      EXPECT_EQ(value, b.metadata[key]) << key;
+}
+
+struct BadInput {
+  std::string name;
+  std::vector<std::string> args;  // "OUT" is replaced by the output path
+  std::string message_part;
+};
+
+class RenderBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(RenderBadInput, ExitsWithCodeTwoAndOneLineAndNoOutput) {
+  TempDir dir;
+  std::vector<std::string> args = GetParam().args;
+  for (std::string& a : args)
+    if (a == "OUT") a = (dir / "out.exr").string();
+  if (GetParam().name == "malformed_scene_file") {
+    std::ofstream(dir / "broken.toml") << "[camera\nposition = [0, 0, 0]\n";
+    for (std::string& a : args)
+      if (a == "broken.toml") a = (dir / "broken.toml").string();
+  }
+  CommandResult r = runGibench(args, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(countLines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(GetParam().message_part), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out.exr"));
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, RenderBadInput,
+    ::testing::Values(
+        BadInput{"unknown_scene", {"render", "--scene", "cornel", "--out", "OUT"}, "cornel"},
+        BadInput{"zero_spp", {"render", "--scene", "cornell", "--spp", "0", "--out", "OUT"},
+                 "--spp"},
+        BadInput{"missing_scene_file",
+                 {"render", "--scene", "/nonexistent/room.toml", "--out", "OUT"},
+                 "room.toml"},
+        BadInput{"malformed_scene_file",
+                 {"render", "--scene", "broken.toml", "--out", "OUT"},
+                 "broken.toml:"},
+        BadInput{"unwritable_output",
+                 {"render", "--scene", "cornell", "--out", "/nonexistent/dir/out.exr"},
+                 "/nonexistent/dir"},
+        BadInput{"not_exr_output", {"render", "--scene", "cornell", "--out", "image.png"}, ".exr"},
+        BadInput{"unknown_technique",
+                 {"render", "--scene", "cornell", "--technique", "magic", "--out", "OUT"},
+                 "magic"},
+        BadInput{"unknown_parameter",
+                 {"render", "--scene", "cornell", "--set", "foo=1", "--out", "OUT"},
+                 "foo"},
+        BadInput{"min_above_max",
+                 {"render", "--scene", "cornell", "--min-bounces", "3", "--max-bounces", "1",
+                  "--out", "OUT"},
+                 "--min-bounces"},
+        BadInput{"non_numeric_spp",
+                 {"render", "--scene", "cornell", "--spp", "many", "--out", "OUT"},
+                 "spp"},
+        BadInput{"missing_out", {"render", "--scene", "cornell"}, "--out"}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(ListCommand, ListsBuiltinScenes) {
+  TempDir dir;
+  CommandResult r = runGibench({"list", "scenes"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("cornell"), std::string::npos);
+  EXPECT_NE(r.out.find("furnace"), std::string::npos);
+  EXPECT_EQ(runGibench({"list", "nonsense"}, dir.path()).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace gib::test

@@ -1,0 +1,257 @@
+#include "image/exr_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+
+#include "common/input_error.h"
+#include "support/temp_dir.h"
+
+// OpenImageIO appears here (and not only in image/) to check our files with an independent
+// writer and reader: files that other tools produce, and what our writer puts on disk.
+
+namespace gib::image {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+// Values that a lossy or converting path would change: fractions, denormals, -0, infinities, NaN.
+Image patternImage(int width, int height, int channels, float seed) {
+  Image image(width, height, channels);
+  const std::span<float> values = image.data();
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = seed + float(i) * 0.1234567f - float(i % 7) * 1.0e-3f;
+  values[0] = -0.0f;
+  values[1] = std::numeric_limits<float>::denorm_min();
+  values[2] = std::numeric_limits<float>::infinity();
+  values[3] = std::numeric_limits<float>::quiet_NaN();
+  return image;
+}
+
+void expectBitIdentical(const Image& actual, const Image& expected) {
+  ASSERT_TRUE(actual.sameSize(expected));
+  EXPECT_EQ(std::memcmp(actual.data().data(), expected.data().data(),
+                        expected.data().size() * sizeof(float)),
+            0);
+}
+
+std::string fileBytes(const fs::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+}
+
+void writeWithOiio(const fs::path& path, const OIIO::ImageSpec& spec,
+                   const std::vector<float>& values) {
+  auto output = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(output);
+  ASSERT_TRUE(output->open(path.string(), spec)) << output->geterror();
+  ASSERT_TRUE(output->write_image(OIIO::TypeFloat, values.data())) << output->geterror();
+  ASSERT_TRUE(output->close());
+}
+
+TEST(ExrIo, MultiLayerRoundTripIsBitExact) {
+  const test::TempDir dir;
+  const std::vector<Layer> layers = {
+      {"", patternImage(5, 3, 3, 1.0f)},
+      {"variance", patternImage(5, 3, 3, 2.0f)},
+      {"albedo", patternImage(5, 3, 4, 3.0f)},
+      {"samples", patternImage(5, 3, 1, 4.0f)},
+  };
+  const Metadata metadata = {
+      {"gibench/scene_hash", "0123456789abcdef0123456789abcdef"},
+      {"gibench/parameters", "{\"bounces\": 3, \"path\": \"a/b:c\"}\nsecond line"},
+      {"gibench/version", "0.1.0 (é, ü)"},
+      {"other.tool/key:with:colons", "x"},
+  };
+  writeExr(dir / "multi.exr", layers, metadata);
+
+  const ExrFile file = readExr(dir / "multi.exr");
+  ASSERT_EQ(file.layers.size(), layers.size());
+  for (const Layer& layer : layers) {
+    SCOPED_TRACE("layer '" + layer.name + "'");
+    const Image* image = file.findLayer(layer.name);
+    ASSERT_NE(image, nullptr);
+    expectBitIdentical(*image, layer.image);
+  }
+  expectBitIdentical(file.rgb(), layers[0].image);
+  EXPECT_EQ(file.metadata, metadata);
+  EXPECT_EQ(file.findLayer("missing"), nullptr);
+}
+
+TEST(ExrIo, WritesFloatZipChannelsNamedByLayer) {
+  const test::TempDir dir;
+  writeExr(dir / "a.exr", {{"", Image(2, 2)}, {"variance", Image(2, 2)}}, {});
+  auto input = OIIO::ImageInput::open((dir / "a.exr").string());
+  ASSERT_TRUE(input);
+  const OIIO::ImageSpec& spec = input->spec();
+  EXPECT_EQ(spec.format, OIIO::TypeFloat);
+  EXPECT_TRUE(spec.channelformats.empty());
+  EXPECT_EQ(spec.get_string_attribute("compression"), "zip");
+  EXPECT_THAT(spec.channelnames, ::testing::UnorderedElementsAre("R", "G", "B", "variance.R",
+                                                                 "variance.G", "variance.B"));
+}
+
+TEST(ExrIo, EqualInputsGiveIdenticalFiles) {
+  const test::TempDir dir;
+  const std::vector<Layer> layers = {{"", patternImage(8, 8, 3, 1.0f)}};
+  const Metadata metadata = {{"gibench/seed", "7"}};
+  writeExr(dir / "first.exr", layers, metadata);
+  writeExr(dir / "second.exr", layers, metadata);
+  EXPECT_EQ(fileBytes(dir / "first.exr"), fileBytes(dir / "second.exr"));
+}
+
+TEST(ExrIo, OverwritesAnExistingFile) {
+  const test::TempDir dir;
+  writeExr(dir / "a.exr", {{"", Image(2, 2, 3, 1.0f)}}, {});
+  writeExr(dir / "a.exr", {{"", Image(3, 1, 3, 2.0f)}}, {});
+  const ExrFile file = readExr(dir / "a.exr");
+  EXPECT_EQ(file.rgb().width(), 3);
+  EXPECT_EQ(file.rgb().pixel(0, 0)[0], 2.0f);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 1);
+}
+
+TEST(ExrIo, ReadsPlainRgbaFileFromOpenImageIO) {
+  const test::TempDir dir;
+  OIIO::ImageSpec spec(3, 2, 4, OIIO::TypeHalf);  // Half on disk: converted on reading.
+  std::vector<float> values(3 * 2 * 4);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = float(i) * 0.25f;
+  writeWithOiio(dir / "rgba.exr", spec, values);
+
+  const ExrFile file = readExr(dir / "rgba.exr");
+  ASSERT_EQ(file.layers.size(), 1u);
+  const Image& rgba = file.rgb();
+  ASSERT_EQ(rgba.channels(), 4);
+  EXPECT_EQ(rgba.width(), 3);
+  EXPECT_EQ(rgba.height(), 2);
+  for (std::size_t i = 0; i < values.size(); ++i) EXPECT_EQ(rgba.data()[i], values[i]);
+  EXPECT_TRUE(file.metadata.empty());  // DateTime and other standard attributes are not ours.
+}
+
+TEST(ExrIo, ReadsLuminanceFileAsGreyRgb) {
+  const test::TempDir dir;
+  OIIO::ImageSpec spec(2, 1, 1, OIIO::TypeFloat);
+  spec.channelnames = {"Y"};
+  writeWithOiio(dir / "y.exr", spec, {0.25f, 0.75f});
+
+  const ExrFile file = readExr(dir / "y.exr");
+  const Image& rgb = file.rgb();
+  ASSERT_EQ(rgb.channels(), 3);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(rgb.pixel(0, 0)[c], 0.25f);
+    EXPECT_EQ(rgb.pixel(1, 0)[c], 0.75f);
+  }
+}
+
+TEST(ExrIo, ReadsUnrecognisedChannelsAsSingleChannelLayers) {
+  const test::TempDir dir;
+  OIIO::ImageSpec spec(1, 1, 7, OIIO::TypeFloat);
+  spec.channelnames = {"B", "G", "R", "Z", "normal.X", "normal.Y", "normal.Z"};
+  writeWithOiio(dir / "aov.exr", spec, {3, 2, 1, 10, 20, 30, 40});
+
+  const ExrFile file = readExr(dir / "aov.exr");
+  const Image& rgb = file.rgb();
+  ASSERT_EQ(rgb.channels(), 3);
+  EXPECT_EQ(rgb.pixel(0, 0)[0], 1.0f);
+  EXPECT_EQ(rgb.pixel(0, 0)[2], 3.0f);
+  ASSERT_NE(file.findLayer("Z"), nullptr);
+  EXPECT_EQ(file.findLayer("Z")->pixel(0, 0)[0], 10.0f);
+  ASSERT_NE(file.findLayer("normal.Y"), nullptr);
+  EXPECT_EQ(file.findLayer("normal.Y")->pixel(0, 0)[0], 30.0f);
+}
+
+TEST(ExrIo, PlacesDataWindowInsideDisplayWindow) {
+  const test::TempDir dir;
+  OIIO::ImageSpec spec(1, 1, 3, OIIO::TypeFloat);  // Data window: the pixel (2, 1) only.
+  spec.x = 2;
+  spec.y = 1;
+  spec.full_width = 4;
+  spec.full_height = 3;
+  writeWithOiio(dir / "crop.exr", spec, {1, 2, 3});
+
+  const ExrFile file = readExr(dir / "crop.exr");
+  const Image& rgb = file.rgb();
+  ASSERT_EQ(rgb.width(), 4);
+  ASSERT_EQ(rgb.height(), 3);
+  EXPECT_EQ(rgb.pixel(2, 1)[1], 2.0f);
+  EXPECT_EQ(rgb.pixel(0, 0)[0], 0.0f);
+  EXPECT_EQ(rgb.pixel(3, 2)[2], 0.0f);
+}
+
+TEST(ExrIo, ReadingMissingFileThrowsInputError) {
+  const test::TempDir dir;
+  try {
+    readExr(dir / "missing.exr");
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("cannot read '"));
+    EXPECT_THAT(error.what(), HasSubstr("missing.exr"));
+  }
+}
+
+TEST(ExrIo, ReadingNonExrFileThrowsInputError) {
+  const test::TempDir dir;
+  std::ofstream(dir / "text.exr") << "not an image\n";
+  EXPECT_THROW(readExr(dir / "text.exr"), InputError);
+  EXPECT_THROW(readExr(dir.path()), InputError);  // A directory.
+}
+
+TEST(ExrIo, ReadingTruncatedFileThrowsInputError) {
+  const test::TempDir dir;
+  writeExr(dir / "full.exr", {{"", patternImage(64, 64, 3, 1.0f)}}, {});
+  const std::string bytes = fileBytes(dir / "full.exr");
+  std::ofstream(dir / "cut.exr", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  EXPECT_THROW(readExr(dir / "cut.exr"), InputError);
+}
+
+TEST(ExrIo, WritingIntoMissingDirectoryThrowsAndLeavesNoFile) {
+  const test::TempDir dir;
+  try {
+    writeExr(dir / "missing" / "a.exr", {{"", Image(2, 2)}}, {});
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("does not exist"));
+    EXPECT_THAT(error.what(), HasSubstr("a.exr"));
+  }
+  EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+TEST(ExrIo, FailedRenameLeavesNoTemporaryFile) {
+  const test::TempDir dir;
+  fs::create_directories(dir / "taken.exr" / "inside");  // A non-empty directory as the target.
+  EXPECT_THROW(writeExr(dir / "taken.exr", {{"", Image(2, 2)}}, {}), InputError);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 1);
+}
+
+TEST(ExrIo, RejectsMalformedMetadataAndLayers) {
+  const test::TempDir dir;
+  const std::vector<Layer> rgb = {{"", Image(2, 2)}};
+  for (const char* key : {"noslash", "/name", "space/", "oiio:x/y", "DateTime"})
+    EXPECT_THROW(writeExr(dir / "a.exr", rgb, {{key, "v"}}), std::invalid_argument) << key;
+  EXPECT_THROW(writeExr(dir / "a.exr", rgb, {{"gibench/empty", ""}}), std::invalid_argument);
+  EXPECT_THROW(writeExr(dir / "a.exr", {}, {}), std::invalid_argument);
+  EXPECT_THROW(writeExr(dir / "a.exr", {{"", Image(2, 2)}, {"v", Image(3, 2)}}, {}),
+               std::invalid_argument);
+  EXPECT_THROW(writeExr(dir / "a.exr", {{"v", Image(2, 2)}, {"v", Image(2, 2)}}, {}),
+               std::invalid_argument);
+  EXPECT_THROW(writeExr(dir / "a.exr", {{"", Image(2, 2, 5)}}, {}), std::invalid_argument);
+  EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+TEST(ExrIo, RgbThrowsWithoutMainLayer) {
+  const test::TempDir dir;
+  writeExr(dir / "a.exr", {{"variance", Image(2, 2)}}, {});
+  const ExrFile file = readExr(dir / "a.exr");
+  EXPECT_NE(file.findLayer("variance"), nullptr);
+  EXPECT_THROW(file.rgb(), InputError);
+}
+
+}  // namespace
+}  // namespace gib::image
