@@ -65,12 +65,13 @@ int runRender(const RenderOptions& o) {
       image::writeExr(ref::checkpointPath(out, spp), {{"", mean}}, m);
     };
   ref::RenderResult result = ref::renderReference(scene, settings, on_checkpoint);
-  ref::addTimingMetadata(metadata, result);
+  ref::addRunMetadata(metadata, result);
   std::filesystem::path png = ref::writeReferenceOutputs(out, result, metadata);
 
   fmt::print("scene      {} (hash {})\n", scene.name, metadata.at("gibench/scene_hash"));
-  fmt::print("rendered   {}x{} at {} spp in {:.2f} s ({:.2f} Mrays/s)\n", settings.width,
-             settings.height, settings.spp, result.seconds, result.raysPerSecond() * 1e-6);
+  fmt::print("rendered   {}x{} at {} spp in {:.2f} s ({:.2f} Mrays/s, peak memory {} MiB)\n",
+             settings.width, settings.height, settings.spp, result.seconds,
+             result.raysPerSecond() * 1e-6, metadata.at("gibench/peak_rss_mb"));
   fmt::print("exr        {}\n", out.string());
   fmt::print("png        {}\n", png.string());
   if (o.checkpoints)

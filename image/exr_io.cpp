@@ -39,6 +39,8 @@ std::string channelName(const std::string& layer, std::string_view suffix) {
 // Writing problems are bugs in the caller, not bad user input.
 void checkLayers(const std::vector<Layer>& layers) {
   if (layers.empty()) throw std::invalid_argument("writeExr: no layers to write");
+  if (layers[0].image.pixelCount() == 0)
+    throw std::invalid_argument("writeExr: OpenEXR cannot store an empty image");
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const Layer& layer = layers[i];
     const int channels = layer.image.channels();

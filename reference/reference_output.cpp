@@ -6,6 +6,7 @@
 #include "reference/embree_scene.h"
 
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -43,9 +44,16 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
   return m;
 }
 
-void addTimingMetadata(image::Metadata& m, const RenderResult& result) {
+void addRunMetadata(image::Metadata& m, const RenderResult& result) {
   m["gibench/render_seconds"] = fmt::format("{:.3f}", result.seconds);
   m["gibench/rays_per_second"] = fmt::format("{:.0f}", result.raysPerSecond());
+  m["gibench/peak_rss_mb"] = fmt::format("{:.1f}", peakResidentMegabytes());
+}
+
+double peakResidentMegabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
 }
 
 fs::path checkpointPath(const fs::path& exr_path, std::uint32_t spp) {

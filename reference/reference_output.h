@@ -12,11 +12,19 @@
 namespace gib::ref {
 
 // Metadata of DESIGN.md ("Images"): program version, scene and its hash, technique, parameters,
-// samples, seed, bounce limits, Embree version. Timing keys (render_seconds, rays_per_second)
-// are the only ones that differ between two runs of the same command.
+// samples, seed, bounce limits, Embree version.
 image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSettings& settings);
 
-void addTimingMetadata(image::Metadata& metadata, const RenderResult& result);
+// The keys that describe how a run went rather than what it computed: the only ones that differ
+// between two runs of the same command.
+inline constexpr const char* kRunDependentKeys[] = {
+    "gibench/render_seconds", "gibench/rays_per_second", "gibench/peak_rss_mb"};
+
+// Render time, rays per second and the process's peak resident memory so far.
+void addRunMetadata(image::Metadata& metadata, const RenderResult& result);
+
+// Peak resident set size of this process, in MiB.
+double peakResidentMegabytes();
 
 // Writes `exr_path` and, beside it, the PNG (same stem) through the OCIO display transform.
 // Returns the PNG's path.

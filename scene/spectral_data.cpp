@@ -2,14 +2,16 @@
 // each row holds eight samples and is labelled with the wavelength of its first one.
 //
 // Sources:
-// - CIE 1931 2° standard observer x̄ ȳ z̄: CIE 015:2004 "Colorimetry", 3rd ed., Table T.4 (the
-//   same values as ISO 11664-1:2007 / CIE S 014-1 sampled every 5 nm, and as Wyszecki & Stiles,
-//   "Color Science", 2nd ed., Table I(3.3.1)), six decimals.
+// - CIE 1931 2° standard observer x̄ ȳ z̄: CIE 015:2004 "Colorimetry", 3rd ed., Table T.4, six
+//   decimals (ISO 11664-1:2007 / CIE S 014-1 at 5 nm rounded to six decimals; Wyszecki & Stiles,
+//   "Color Science", 2nd ed., Table I(3.3.1)).
 // - CIE standard illuminant D65: CIE 015:2004 Table T.1 (ISO 11664-2:2007 / CIE S 014-2).
-// Cross-checked value by value against three independent transcriptions (a CIE 015:2004 table in
-// a colorimetry library, a GLSL table citing cie.co.at, and pbrt-v4's rgb2spec_opt.cpp, whose
-// longer decimals round to these); they agree everywhere. tests/scene/spectrum_test.cpp checks
-// the invariants: Σ ȳ·5 nm ≈ 106.857, D65 at xy = (0.3127, 0.3290), x̄(600) = 1.0622, ȳ(555) = 1.
+// Cross-checked value by value against independent transcriptions, which agree on every sample:
+// the observer against pbrt-v4's src/pbrt/cmd/rgb2spec_opt.cpp (longer decimals that round to
+// these), a JavaScript colorimetry module quoting CIE 015:2004 and a GLSL table citing
+// cie.co.at; D65 against pbrt-v4, the same JavaScript module and a Rust colour crate.
+// tests/scene/spectrum_test.cpp checks the published invariants: Σ ȳ·5 nm = 106.857, D65 at
+// xy = (0.3127, 0.3290), x̄ peaking at 600 nm with 1.0622, ȳ(555) = 1, D65(560) = 100.
 #include "scene/spectral_data.h"
 
 namespace gib::scene {
