@@ -78,6 +78,9 @@ struct BadInput {
   std::string message_part;
 };
 
+// Test names and failure messages show the case's name, not its bytes.
+void PrintTo(const BadInput& input, std::ostream* os) { *os << input.name; }
+
 class RenderBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(RenderBadInput, ExitsWithCodeTwoAndOneLineAndNoOutput) {
