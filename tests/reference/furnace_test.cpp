@@ -10,6 +10,22 @@
 namespace gib::ref {
 namespace {
 
+struct ImageMean {
+  double mean = 0;
+  double standard_error = 0;
+};
+
+// The mean over all pixels and channels; pixels are independent, so its variance is Σ var / N².
+ImageMean imageMean(const RenderResult& r) {
+  double sum = 0, sum_variance = 0;
+  for (std::size_t i = 0; i < r.mean.data().size(); ++i) {
+    sum += r.mean.data()[i];
+    sum_variance += r.variance.data()[i];
+  }
+  const double n = double(r.mean.data().size());
+  return {sum / n, std::sqrt(sum_variance) / n};
+}
+
 TEST(Furnace, EveryPixelIsOneWithinItsStandardError) {
   const scene::Scene furnace = scene::loadScene("furnace");
   RenderSettings settings;
@@ -22,21 +38,14 @@ TEST(Furnace, EveryPixelIsOneWithinItsStandardError) {
   // fail by chance on ~2 pixels, so it is applied to the image mean instead (below).
   const double tests = 3.0 * r.mean.pixelCount();
   const double z_max = metrics::normalQuantile(1 - metrics::sidakSignificance(0.01, tests) / 2);
-  double sum = 0, sum_variance = 0;
   for (std::size_t i = 0; i < r.mean.data().size(); ++i) {
-    double mean = r.mean.data()[i];
     double variance = r.variance.data()[i];
     ASSERT_GT(variance, 0.0) << "the estimator is not deterministic here";
-    EXPECT_LT(std::abs(mean - 1.0), z_max * std::sqrt(variance)) << "value " << i;
-    sum += mean;
-    sum_variance += variance;
+    EXPECT_LT(std::abs(r.mean.data()[i] - 1.0), z_max * std::sqrt(variance)) << "value " << i;
   }
-  // The image mean: pixels are independent, so its variance is Σ var / N².
-  const double n = double(r.mean.data().size());
-  const double image_mean = sum / n;
-  const double image_se = std::sqrt(sum_variance) / n;
-  EXPECT_NEAR(image_mean, 1.0, 3 * image_se) << "± " << image_se;
-  EXPECT_LT(image_se, 0.01);
+  const ImageMean m = imageMean(r);
+  EXPECT_NEAR(m.mean, 1.0, 3 * m.standard_error) << "± " << m.standard_error;
+  EXPECT_LT(m.standard_error, 0.01);
 }
 
 TEST(Furnace, BounceLimitedRadianceIsTheGeometricSeries) {
@@ -47,15 +56,9 @@ TEST(Furnace, BounceLimitedRadianceIsTheGeometricSeries) {
     settings.width = settings.height = 8;
     settings.spp = 256;
     settings.path_class.max_bounces = k;
-    const RenderResult r = renderReference(furnace, settings);
-    double sum = 0, sum_variance = 0;
-    for (std::size_t i = 0; i < r.mean.data().size(); ++i) {
-      sum += r.mean.data()[i];
-      sum_variance += r.variance.data()[i];
-    }
-    const double n = double(r.mean.data().size());
+    const ImageMean m = imageMean(renderReference(furnace, settings));
     const double expected = 1.0 - std::pow(0.5, k + 1);
-    EXPECT_NEAR(sum / n, expected, 3 * std::sqrt(sum_variance) / n + 1e-6) << "k = " << k;
+    EXPECT_NEAR(m.mean, expected, 3 * m.standard_error + 1e-6) << "k = " << k;
   }
 }
 
