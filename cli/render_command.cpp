@@ -31,16 +31,17 @@ struct RenderOptions {
 
 int runRender(const RenderOptions& o) {
   if (o.technique != "reference")
-    throw InputError(fmt::format(
-        "unknown technique '{}'; available: reference (see `gibench list techniques`)",
-        o.technique));
+    throw InputError(
+        fmt::format("unknown technique '{}'; available: reference (see `gibench list techniques`)",
+                    o.technique));
   if (!o.set.empty())
-    throw InputError(fmt::format("technique 'reference' has no parameter '{}'; it takes --spp, "
-                                 "--seed, --min-bounces, --max-bounces instead",
-                                 o.set.front().substr(0, o.set.front().find('='))));
+    throw InputError(
+        fmt::format("technique 'reference' has no parameter '{}'; it takes --spp, "
+                    "--seed, --min-bounces, --max-bounces instead",
+                    o.set.front().substr(0, o.set.front().find('='))));
   if (o.spp <= 0)
-    throw InputError(fmt::format("--spp {} renders nothing; give at least 1 sample per pixel",
-                                 o.spp));
+    throw InputError(
+        fmt::format("--spp {} renders nothing; give at least 1 sample per pixel", o.spp));
   const std::filesystem::path out(o.out);
   ref::checkOutputPath(out);
   const scene::Scene scene = scene::loadScene(o.scene);
@@ -83,7 +84,8 @@ int runRender(const RenderOptions& o) {
 
 CommandRunner addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
-  CLI::App* render = app.add_subcommand("render", "Render a scene with the reference or a technique");
+  CLI::App* render =
+      app.add_subcommand("render", "Render a scene with the reference or a technique");
   render->add_option("--scene", o->scene, "built-in scene name or path to a .toml scene file")
       ->required();
   render->add_option("--technique", o->technique, "reference (default) or a technique name");
@@ -91,8 +93,9 @@ CommandRunner addRenderCommand(CLI::App& app) {
   render->add_option("--height", o->height, "image height in pixels (default: the scene's)");
   render->add_option("--spp", o->spp, "samples per pixel")->capture_default_str();
   render->add_option("--seed", o->seed, "random seed")->capture_default_str();
-  render->add_option("--min-bounces", o->min_bounces,
-                     "only paths with at least this many bounces (0: emitters seen directly)")
+  render
+      ->add_option("--min-bounces", o->min_bounces,
+                   "only paths with at least this many bounces (0: emitters seen directly)")
       ->capture_default_str();
   render->add_option("--max-bounces", o->max_bounces,
                      "only paths with at most this many bounces (default: unlimited)");

@@ -2,17 +2,23 @@
 
 #include <xxhash.h>
 
+#include <fmt/format.h>
 #include <bit>
 #include <cstring>
-#include <fmt/format.h>
 
 namespace gib {
 
-static XXH3_state_t* state(void* p) { return static_cast<XXH3_state_t*>(p); }
+static XXH3_state_t* state(void* p) {
+  return static_cast<XXH3_state_t*>(p);
+}
 
-ContentHasher::ContentHasher() : state_(XXH3_createState()) { XXH3_128bits_reset(state(state_)); }
+ContentHasher::ContentHasher() : state_(XXH3_createState()) {
+  XXH3_128bits_reset(state(state_));
+}
 
-ContentHasher::~ContentHasher() { XXH3_freeState(state(state_)); }
+ContentHasher::~ContentHasher() {
+  XXH3_freeState(state(state_));
+}
 
 void ContentHasher::addBytes(std::span<const std::uint8_t> bytes) {
   XXH3_128bits_update(state(state_), bytes.data(), bytes.size());

@@ -2,12 +2,14 @@
 
 #include <unistd.h>
 
-#include <cstdio>
 #include <fmt/format.h>
+#include <cstdio>
 
 namespace gib {
 
-bool ProgressBar::stderrIsTerminal() { return isatty(STDERR_FILENO) == 1; }
+bool ProgressBar::stderrIsTerminal() {
+  return isatty(STDERR_FILENO) == 1;
+}
 
 ProgressBar::ProgressBar(std::string label, std::uint64_t total, std::string unit)
     : label_(std::move(label)),
@@ -17,7 +19,9 @@ ProgressBar::ProgressBar(std::string label, std::uint64_t total, std::string uni
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+  finish();
+}
 
 void ProgressBar::advance(std::uint64_t units) {
   std::lock_guard lock(mutex_);
@@ -45,9 +49,9 @@ void ProgressBar::draw(bool final) {
   if (filled < kWidth) bar += '>' + std::string(kWidth - filled - 1, ' ');
   double rate = seconds > 0 ? double(done_) / seconds : 0.0;
   double eta = rate > 0 ? double(total_ - done_) / rate : 0.0;
-  std::string line = fmt::format("\r{} [{}] {:3.0f}% {}{}/s {} {:.0f}s ", label_, bar,
-                                 100.0 * fraction, formatSi(rate), unit_,
-                                 final ? "took" : "ETA", final ? seconds : eta);
+  std::string line =
+      fmt::format("\r{} [{}] {:3.0f}% {}{}/s {} {:.0f}s ", label_, bar, 100.0 * fraction,
+                  formatSi(rate), unit_, final ? "took" : "ETA", final ? seconds : eta);
   std::fputs(line.c_str(), stderr);
   if (final) std::fputc('\n', stderr);
   std::fflush(stderr);

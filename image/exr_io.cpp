@@ -88,19 +88,21 @@ OIIO::ImageSpec makeSpec(const std::vector<Layer>& layers, const Metadata& metad
   return spec;
 }
 
-std::vector<float> interleave(const std::vector<Layer>& layers, int total_channels) {
-  const std::size_t pixels = layers[0].image.pixelCount();
-  std::vector<float> values(pixels * std::size_t(total_channels));
+// Interleaves rows [y0, y1) of every layer into `values` (all channels of a pixel together).
+void interleaveRows(const std::vector<Layer>& layers, int total_channels, int y0, int y1,
+                    std::vector<float>& values) {
+  const auto width = std::size_t(layers[0].image.width());
+  const std::size_t pixels = width * std::size_t(y1 - y0);
+  values.resize(pixels * std::size_t(total_channels));
   std::size_t first = 0;
   for (const Layer& layer : layers) {
-    const std::span<const float> source = layer.image.data();
     const auto channels = std::size_t(layer.image.channels());
+    const float* source = layer.image.data().data() + std::size_t(y0) * width * channels;
     for (std::size_t p = 0; p < pixels; ++p)
-      std::copy_n(source.data() + p * channels, channels,
+      std::copy_n(source + p * channels, channels,
                   values.data() + p * std::size_t(total_channels) + first);
     first += channels;
   }
-  return values;
 }
 
 // OpenImageIO's messages may span lines; ours are one line (DESIGN.md, "Errors").
@@ -226,16 +228,26 @@ void writeExr(const fs::path& path, const std::vector<Layer>& layers, const Meta
   checkLayers(layers);
   checkMetadata(metadata);
   const OIIO::ImageSpec spec = makeSpec(layers, metadata);
-  const std::vector<float> values = interleave(layers, spec.nchannels);
 
   detail::writeAtomically(path, [&](const fs::path& temporary) {
     // Named format: the temporary file's name does not end in ".exr".
     std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create("openexr");
     if (!output) throw std::logic_error("OpenImageIO has no OpenEXR writer");
-    if (!output->open(temporary.string(), spec) ||
-        !output->write_image(OIIO::TypeFloat, values.data()) || !output->close())
+    auto fail = [&] {
       throw InputError("cannot write '" + path.string() + "': " + oneLine(output->geterror()) +
                        "; check that the directory is writable and the disk has space");
+    };
+    if (!output->open(temporary.string(), spec)) fail();
+    // Rows go out in bands, so a large multi-layer image is never copied whole (this keeps a
+    // 1024² reference render within its memory budget).
+    constexpr int kRowsPerBand = 64;
+    std::vector<float> band;
+    for (int y0 = 0; y0 < spec.height; y0 += kRowsPerBand) {
+      const int y1 = std::min(y0 + kRowsPerBand, spec.height);
+      interleaveRows(layers, spec.nchannels, y0, y1, band);
+      if (!output->write_scanlines(y0, y1, 0, OIIO::TypeFloat, band.data())) fail();
+    }
+    if (!output->close()) fail();
   });
 }
 

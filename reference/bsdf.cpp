@@ -14,7 +14,9 @@ Bsdf::Bsdf(const scene::Material& material, const glm::vec3& n, const glm::vec3&
   select_glossy_ = (yd + ys) > 0 ? ys / (yd + ys) : 0;
 }
 
-float Bsdf::glossyCos(const glm::vec3& wi) const { return glm::dot(mirror_, wi); }
+float Bsdf::glossyCos(const glm::vec3& wi) const {
+  return glm::dot(mirror_, wi);
+}
 
 Rgb Bsdf::evaluate(const glm::vec3& wi) const {
   if (glm::dot(n_, wi) <= 0) return Rgb(0.0f);

@@ -13,8 +13,8 @@ using scene::Rgb;
 
 struct BsdfSample {
   glm::vec3 wi{0.0f};
-  Rgb f{0.0f};      // BSDF value for (wo, wi)
-  float pdf = 0;    // solid-angle density of wi under `sample`
+  Rgb f{0.0f};    // BSDF value for (wo, wi)
+  float pdf = 0;  // solid-angle density of wi under `sample`
 };
 
 class Bsdf {
@@ -37,7 +37,7 @@ class Bsdf {
 
   const scene::Material& material_;
   glm::vec3 n_;
-  glm::vec3 mirror_;  // mirror direction of wo about n
+  glm::vec3 mirror_;         // mirror direction of wo about n
   float select_glossy_ = 0;  // probability of sampling the glossy lobe
   bool diffuse_is_black_ = true;
 };

@@ -2,9 +2,9 @@
 
 #include <embree3/rtcore.h>
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <stdexcept>
 
 namespace gib::ref {

@@ -22,7 +22,9 @@ float powerHeuristic(float pdf_a, float pdf_b) {
   return a + b > 0 ? a / (a + b) : 0.0f;
 }
 
-float maxComponent(const Rgb& c) { return std::max(c.r, std::max(c.g, c.b)); }
+float maxComponent(const Rgb& c) {
+  return std::max(c.r, std::max(c.g, c.b));
+}
 
 }  // namespace
 
@@ -52,8 +54,7 @@ PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class)
       area_lights_(scene, triangles_),
       has_sky_(maxComponent(scene.sky_radiance) > 0) {}
 
-Rgb PathTracer::estimateDirect(const Vertex& v, SampleStream& random,
-                               std::uint32_t& rays) const {
+Rgb PathTracer::estimateDirect(const Vertex& v, SampleStream& random, std::uint32_t& rays) const {
   Rgb result(0.0f);
   // Geometry (distances, cosines) is measured from the surface point itself; only shadow rays
   // start from the offset origin, so the offset does not bias inverse-square falloff.
@@ -79,8 +80,8 @@ Rgb PathTracer::estimateDirect(const Vertex& v, SampleStream& random,
         if (segmentIsClear(origin, s.point)) {
           float pdf_light = s.pdf_area * dist2 / cos_light;
           float weight = powerHeuristic(pdf_light, v.bsdf->pdf(wi));
-          result += f * scene_.materials[light.material].emission *
-                    (cos_surface * weight / pdf_light);
+          result +=
+              f * scene_.materials[light.material].emission * (cos_surface * weight / pdf_light);
         }
       }
     }
@@ -133,8 +134,7 @@ Rgb PathTracer::estimateDirect(const Vertex& v, SampleStream& random,
 }
 
 RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
-                                    const glm::vec3& camera_direction,
-                                    SampleStream& random) const {
+                                    const glm::vec3& camera_direction, SampleStream& random) const {
   RadianceSample out;
   auto record = [&](int bounces, const Rgb& contribution) {
     if (!path_class_.contains(bounces)) return;

@@ -8,11 +8,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <thread>
 
 namespace gib::ref {
@@ -40,8 +40,7 @@ std::vector<Tile> makeTiles(int width, int height) {
   return tiles;
 }
 
-image::Image meanImage(const std::vector<PixelSums>& sums, int width, int height,
-                       std::uint32_t n) {
+image::Image meanImage(const std::vector<PixelSums>& sums, int width, int height, std::uint32_t n) {
   image::Image mean(width, height);
   for (std::size_t i = 0; i < sums.size(); ++i)
     for (int c = 0; c < 3; ++c) mean.data()[3 * i + c] = float(sums[i].sum[c] / n);

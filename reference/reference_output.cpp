@@ -5,9 +5,9 @@
 #include "image/display.h"
 #include "reference/embree_scene.h"
 
-#include <nlohmann/json.hpp>
 #include <sys/resource.h>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
 
@@ -79,12 +79,14 @@ void checkOutputPath(const fs::path& exr_path) {
   fs::path dir = exr_path.parent_path().empty() ? fs::path(".") : exr_path.parent_path();
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw InputError(fmt::format("cannot write '{}': directory '{}' does not exist; create it first",
-                                 exr_path.string(), dir.string()));
+    throw InputError(
+        fmt::format("cannot write '{}': directory '{}' does not exist; create it first",
+                    exr_path.string(), dir.string()));
   if (access(dir.c_str(), W_OK) != 0)
-    throw InputError(fmt::format("cannot write '{}': directory '{}' is not writable; choose another "
-                                 "--out",
-                                 exr_path.string(), dir.string()));
+    throw InputError(
+        fmt::format("cannot write '{}': directory '{}' is not writable; choose another "
+                    "--out",
+                    exr_path.string(), dir.string()));
 }
 
 }  // namespace gib::ref

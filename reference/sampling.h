@@ -25,7 +25,9 @@ struct Frame {
 
 // Cosine-weighted hemisphere around +z: pdf = cos θ / π.
 glm::vec3 sampleCosineHemisphere(glm::vec2 u);
-inline float cosineHemispherePdf(float cos_theta) { return cos_theta > 0 ? cos_theta * kInvPi : 0; }
+inline float cosineHemispherePdf(float cos_theta) {
+  return cos_theta > 0 ? cos_theta * kInvPi : 0;
+}
 
 // Uniform hemisphere around +z: pdf = 1 / 2π.
 glm::vec3 sampleUniformHemisphere(glm::vec2 u);

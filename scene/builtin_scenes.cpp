@@ -3,8 +3,8 @@
 #include "common/input_error.h"
 #include "scene/scene_file.h"
 
-#include <filesystem>
 #include <fmt/format.h>
+#include <filesystem>
 
 namespace gib::scene {
 

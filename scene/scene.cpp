@@ -5,8 +5,8 @@
 
 #include <glm/geometric.hpp>
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 
 namespace gib::scene {
 
@@ -27,7 +27,9 @@ namespace {
 bool isFinite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
-bool isNonNegative(const glm::vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
+bool isNonNegative(const glm::vec3& v) {
+  return v.x >= 0 && v.y >= 0 && v.z >= 0;
+}
 
 void require(bool ok, const std::string& message) {
   if (!ok) throw InputError(message);

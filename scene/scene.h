@@ -4,8 +4,8 @@
 // directional irradiance in W/m² on a plane perpendicular to the light.
 #pragma once
 
-#include <glm/vec3.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <string>
@@ -16,7 +16,9 @@ namespace gib::scene {
 using Rgb = glm::vec3;
 
 // Luminance of linear Rec.709 RGB; used everywhere (importance sampling, metrics, tone mapping).
-inline float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+inline float luminance(const Rgb& c) {
+  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
 
 enum class MaterialType { kLambert, kPhong };
 

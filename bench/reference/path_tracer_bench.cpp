@@ -49,8 +49,8 @@ std::vector<Ray> makeRays(const scene::Scene& scene, float epsilon) {
   const scene::CameraFrame camera = scene::makeCameraFrame(scene.camera, kSize, kSize);
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x)
-      rays.push_back({camera.origin,
-                      scene::cameraRayDirection(camera, kSize, kSize, x + 0.5f, y + 0.5f)});
+      rays.push_back(
+          {camera.origin, scene::cameraRayDirection(camera, kSize, kSize, x + 0.5f, y + 0.5f)});
   const ref::TriangleTable triangles(scene);
   for (std::uint32_t i = 0; i < std::uint32_t(kSize * kSize); ++i) {
     ref::SampleStream random(7, i, 0);
@@ -60,7 +60,8 @@ std::vector<Ray> makeRays(const scene::Scene& scene, float epsilon) {
     glm::vec3 p = t.point(b.y, 1.0f - b.x - b.y);
     // Leave from the side facing the box's interior half the time, either side otherwise.
     if (random.next() < 0.5f) n = -n;
-    glm::vec3 d = ref::Frame(n).toWorld(ref::sampleCosineHemisphere({random.next(), random.next()}));
+    glm::vec3 d =
+        ref::Frame(n).toWorld(ref::sampleCosineHemisphere({random.next(), random.next()}));
     rays.push_back({p + epsilon * n, d});
   }
   return rays;

@@ -17,9 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<std::string> renderArgs(const fs::path& out, std::vector<std::string> extra = {}) {
-  std::vector<std::string> args = {"render", "--scene",  "cornell",     "--width", "24",
-                                   "--height", "16",     "--spp",       "4",       "--out",
-                                   out.string()};
+  std::vector<std::string> args = {"render", "--scene",  "cornell",   "--width",
+                                   "24",     "--height", "16",        "--spp",
+                                   "4",      "--out",    out.string()};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -79,7 +79,9 @@ struct BadInput {
 };
 
 // Test names and failure messages show the case's name, not its bytes.
-void PrintTo(const BadInput& input, std::ostream* os) { *os << input.name; }
+void PrintTo(const BadInput& input, std::ostream* os) {
+  *os << input.name;
+}
 
 class RenderBadInput : public ::testing::TestWithParam<BadInput> {};
 
@@ -105,8 +107,8 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, RenderBadInput,
     ::testing::Values(
         BadInput{"unknown_scene", {"render", "--scene", "cornel", "--out", "OUT"}, "cornel"},
-        BadInput{"zero_spp", {"render", "--scene", "cornell", "--spp", "0", "--out", "OUT"},
-                 "--spp"},
+        BadInput{
+            "zero_spp", {"render", "--scene", "cornell", "--spp", "0", "--out", "OUT"}, "--spp"},
         BadInput{"missing_scene_file",
                  {"render", "--scene", "/nonexistent/room.toml", "--out", "OUT"},
                  "room.toml"},

@@ -9,7 +9,8 @@ namespace {
 
 TEST(Distributions, ChiSquareSurvivalMatchesClosedForms) {
   // χ²(2): P(X ≥ x) = e^{−x/2}.
-  for (double x : {0.1, 1.0, 5.0, 20.0}) EXPECT_NEAR(chiSquareSurvival(x, 2), std::exp(-x / 2), 1e-12);
+  for (double x : {0.1, 1.0, 5.0, 20.0})
+    EXPECT_NEAR(chiSquareSurvival(x, 2), std::exp(-x / 2), 1e-12);
   // χ²(1): P(X ≥ x) = erfc(√(x/2)).
   for (double x : {0.01, 0.5, 3.84, 10.0})
     EXPECT_NEAR(chiSquareSurvival(x, 1), std::erfc(std::sqrt(x / 2)), 1e-10);

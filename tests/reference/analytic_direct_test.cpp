@@ -4,9 +4,9 @@
 #include "reference/path_tracer.h"
 #include "scene/mesh_builder.h"
 
+#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
-#include <gtest/gtest.h>
 
 #include <cmath>
 
@@ -80,8 +80,8 @@ TEST(AnalyticDirect, RectangularAreaLightMatchesLambertsFormula) {
   lamp.emission = scene::Rgb(2.0f);
   s.materials.push_back(lamp);
   // A 1.0 × 0.6 rectangle at height 1, wound so that it emits downwards.
-  std::vector<glm::vec3> corners = {{0.5f, 1, -0.3f}, {0.5f, 1, 0.3f}, {-0.5f, 1, 0.3f},
-                                    {-0.5f, 1, -0.3f}};
+  std::vector<glm::vec3> corners = {
+      {0.5f, 1, -0.3f}, {0.5f, 1, 0.3f}, {-0.5f, 1, 0.3f}, {-0.5f, 1, -0.3f}};
   scene::Mesh light;
   light.name = "light";
   light.material = 1;
@@ -91,8 +91,8 @@ TEST(AnalyticDirect, RectangularAreaLightMatchesLambertsFormula) {
   // Direct lighting only, without the emitter seen directly.
   const PathTracer tracer(s, PathClass{1, 1});
   std::vector<glm::dvec3> polygon(corners.begin(), corners.end());
-  const std::vector<glm::vec3> points = {{0, 0, 0}, {0.4f, 0, 0.2f}, {1.5f, 0, 0.3f},
-                                         {-3, 0, 2}, {0.7f, 0, -0.6f}};
+  const std::vector<glm::vec3> points = {
+      {0, 0, 0}, {0.4f, 0, 0.2f}, {1.5f, 0, 0.3f}, {-3, 0, 2}, {0.7f, 0, -0.6f}};
   for (std::size_t i = 0; i < points.size(); ++i) {
     double expected = kAlbedo / kPi * polygonIrradiance(polygon, points[i], 2.0);
     Estimate e = estimateFloorRadiance(tracer, points[i], 20000, std::uint32_t(i));

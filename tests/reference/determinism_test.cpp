@@ -10,8 +10,7 @@ namespace gib::ref {
 namespace {
 
 bool bitIdentical(const image::Image& a, const image::Image& b) {
-  return a.sameSize(b) &&
-         std::memcmp(a.data().data(), b.data().data(), a.data().size_bytes()) == 0;
+  return a.sameSize(b) && std::memcmp(a.data().data(), b.data().data(), a.data().size_bytes()) == 0;
 }
 
 TEST(Determinism, ImagesAreBitIdenticalAcrossThreadCounts) {

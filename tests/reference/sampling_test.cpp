@@ -2,13 +2,13 @@
 // (pbrt-v4's approach): bin 10⁶ samples on the sphere, integrate the density over each bin
 // numerically, pool bins with an expected count below 5, and reject at a family-wise
 // significance of 1% (Šidák-corrected over the tests in this file).
+#include "reference/sampling.h"
 #include "metrics/distributions.h"
 #include "reference/bsdf.h"
 #include "reference/rng.h"
-#include "reference/sampling.h"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <functional>
@@ -98,7 +98,9 @@ double perTestSignificance() {
 
 TEST(SamplingChiSquare, CosineHemisphereMatchesItsDensity) {
   double p = chiSquarePValue(
-      [](SampleStream& r) { return sampleCosineHemisphere({r.next(), r.next()}); },
+      [](SampleStream& r) {
+        return sampleCosineHemisphere({r.next(), r.next()});
+      },
       [](const glm::vec3& w) { return double(cosineHemispherePdf(w.z)); });
   EXPECT_GT(p, perTestSignificance());
 }
@@ -108,7 +110,9 @@ class PhongLobeChiSquare : public ::testing::TestWithParam<float> {};
 TEST_P(PhongLobeChiSquare, MatchesItsDensity) {
   const float n = GetParam();
   double p = chiSquarePValue(
-      [n](SampleStream& r) { return samplePhongLobe({r.next(), r.next()}, n); },
+      [n](SampleStream& r) {
+        return samplePhongLobe({r.next(), r.next()}, n);
+      },
       [n](const glm::vec3& w) { return double(phongLobePdf(w.z, n)); });
   EXPECT_GT(p, perTestSignificance()) << "exponent " << n;
 }
@@ -143,7 +147,9 @@ TEST(SamplingChiSquare, PhongMaterialSamplerMatchesItsPdf) {
 
 TEST(SamplingChiSquare, UniformHemisphereMatchesItsDensity) {
   double p = chiSquarePValue(
-      [](SampleStream& r) { return sampleUniformHemisphere({r.next(), r.next()}); },
+      [](SampleStream& r) {
+        return sampleUniformHemisphere({r.next(), r.next()});
+      },
       [](const glm::vec3& w) { return w.z > 0 ? double(kUniformHemispherePdf) : 0.0; });
   EXPECT_GT(p, perTestSignificance());
 }
@@ -151,7 +157,9 @@ TEST(SamplingChiSquare, UniformHemisphereMatchesItsDensity) {
 TEST(SamplingChiSquare, RejectsAWrongDensity) {
   // The test must be able to fail: cosine samples against a uniform-hemisphere density.
   double p = chiSquarePValue(
-      [](SampleStream& r) { return sampleCosineHemisphere({r.next(), r.next()}); },
+      [](SampleStream& r) {
+        return sampleCosineHemisphere({r.next(), r.next()});
+      },
       [](const glm::vec3& w) { return w.z > 0 ? double(kUniformHemispherePdf) : 0.0; });
   EXPECT_LT(p, 1e-6);
 }

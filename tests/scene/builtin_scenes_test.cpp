@@ -1,9 +1,9 @@
-#include "common/input_error.h"
 #include "scene/builtin_scenes.h"
+#include "common/input_error.h"
 #include "scene/camera.h"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <map>
 #include <utility>
@@ -22,8 +22,8 @@ TEST(CornellBox, HasThePublishedGeometryAndCamera) {
   for (const Mesh& m : s.meshes) {
     if (!s.materials[m.material].isEmissive()) continue;
     for (const glm::uvec3& t : m.triangles) {
-      glm::vec3 n = glm::cross(m.positions[t[1]] - m.positions[t[0]],
-                               m.positions[t[2]] - m.positions[t[0]]);
+      glm::vec3 n =
+          glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
       light_area += 0.5f * glm::length(n);
       EXPECT_LT(n.y, 0) << "the light must face down";
     }
