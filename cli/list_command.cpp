@@ -1,5 +1,6 @@
 #include "cli/commands.h"
 #include "common/input_error.h"
+#include "metrics/metric_registry.h"
 #include "scene/builtin_scenes.h"
 
 #include <fmt/format.h>
@@ -11,11 +12,14 @@ namespace gib::cli {
 CommandRunner addListCommand(CLI::App& app) {
   CLI::App* list = app.add_subcommand("list", "List scenes, techniques, metrics or suites");
   auto what = std::make_shared<std::string>();
-  list->add_option("what", *what, "scenes | techniques")->required();
+  list->add_option("what", *what, "scenes | techniques | metrics")->required();
   return [what] {
     if (*what == "scenes") {
-      for (const scene::BuiltinSceneInfo& info : scene::builtinScenes())
+      for (const scene::BuiltinSceneInfo& info : scene::builtinScenes()) {
         fmt::print("{:<10} {}\n", info.name, info.description);
+        for (const std::string& line : describeParameters(info.parameters))
+          fmt::print("{:<10}   --scene-set {}\n", "", line);
+      }
       fmt::print("{:<10} {}\n", "FILE.toml", "a scene file (TOML referencing OBJ meshes)");
       return 0;
     }
@@ -25,7 +29,13 @@ CommandRunner addListCommand(CLI::App& app) {
                  "--max-bounces --checkpoints --threads");
       return 0;
     }
-    throw InputError(fmt::format("cannot list '{}'; choose scenes or techniques", *what));
+    if (*what == "metrics") {
+      for (const metrics::MetricInfo& info : metrics::metricCatalogue())
+        fmt::print("{:<10} {}\n", info.name, info.description);
+      return 0;
+    }
+    throw InputError(
+        fmt::format("cannot list '{}'; choose scenes, techniques or metrics", *what));
   };
 }
 

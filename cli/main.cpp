@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   };
   add(&gib::cli::addListCommand, "list");
   add(&gib::cli::addRenderCommand, "render");
+  add(&gib::cli::addCompareCommand, "compare");
 
   try {
     app.parse(argc, argv);

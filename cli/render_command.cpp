@@ -26,6 +26,7 @@ struct RenderOptions {
   int threads = 0;
   bool checkpoints = false;
   std::vector<std::string> set;
+  std::vector<std::string> scene_set;
   std::string out;
 };
 
@@ -44,7 +45,7 @@ int runRender(const RenderOptions& o) {
         fmt::format("--spp {} renders nothing; give at least 1 sample per pixel", o.spp));
   const std::filesystem::path out(o.out);
   ref::checkOutputPath(out);
-  const scene::Scene scene = scene::loadScene(o.scene);
+  const scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
 
   ref::RenderSettings settings;
   settings.width = o.width.value_or(scene.default_width);
@@ -88,6 +89,8 @@ CommandRunner addRenderCommand(CLI::App& app) {
       app.add_subcommand("render", "Render a scene with the reference or a technique");
   render->add_option("--scene", o->scene, "built-in scene name or path to a .toml scene file")
       ->required();
+  render->add_option("--scene-set", o->scene_set,
+                     "scene parameter key=value (repeatable; see `gibench list scenes`)");
   render->add_option("--technique", o->technique, "reference (default) or a technique name");
   render->add_option("--width", o->width, "image width in pixels (default: the scene's)");
   render->add_option("--height", o->height, "image height in pixels (default: the scene's)");

@@ -31,6 +31,9 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
   m["gibench/scene"] = scene.name;
   m["gibench/scene_hash"] = scene::hashScene(scene);
   m["gibench/scene_provenance"] = scene.provenance;
+  nlohmann::ordered_json scene_parameters = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : scene.parameters) scene_parameters[key] = value;
+  m["gibench/scene_parameters"] = scene_parameters.dump();
   m["gibench/width"] = std::to_string(s.width);
   m["gibench/height"] = std::to_string(s.height);
   m["gibench/spp"] = std::to_string(s.spp);

@@ -12,18 +12,20 @@ namespace {
 
 struct BuiltinScene {
   BuiltinSceneInfo info;
-  Scene (*make)();
+  Scene (*make)(const ParameterValues&);
 };
 
 const std::vector<BuiltinScene>& registry() {
   static const std::vector<BuiltinScene> scenes = {
       {{"cornell",
         "the Cornell box as published by the Cornell Program of Computer Graphics (mm, spectral "
-        "reflectances converted to Rec.709)"},
+        "reflectances converted to Rec.709)",
+        {}},
        &makeCornellBox},
       {{"furnace",
         "inside a closed sphere with albedo 0.5 and emission 0.5: every pixel's exact radiance "
-        "is 1.0"},
+        "is 1.0",
+        {}},
        &makeFurnace},
   };
   return scenes;
@@ -40,15 +42,24 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
   return infos;
 }
 
-Scene loadScene(std::string_view name_or_path) {
+Scene loadScene(std::string_view name_or_path, const std::vector<std::string>& parameters) {
   for (const BuiltinScene& s : registry())
     if (s.info.name == name_or_path) {
-      Scene scene = s.make();
+      const ParameterValues values =
+          parseParameters(s.info.parameters, parameters, fmt::format("scene '{}'", s.info.name));
+      Scene scene = s.make(values);
+      scene.parameters = values.canonical();
       validateScene(scene);
       return scene;
     }
   std::filesystem::path path(name_or_path);
-  if (path.extension() == ".toml") return loadSceneFile(path);
+  if (path.extension() == ".toml") {
+    if (!parameters.empty())
+      throw InputError(fmt::format("scene file '{}' takes no --scene-set parameters; edit the file "
+                                   "instead",
+                                   path.string()));
+    return loadSceneFile(path);
+  }
   std::string names;
   for (const BuiltinScene& s : registry()) names += (names.empty() ? "" : ", ") + s.info.name;
   throw InputError(fmt::format(

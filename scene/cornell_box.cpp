@@ -45,7 +45,7 @@ void addBlock(Mesh& mesh, const glm::vec3 (&quads)[5][4]) {
 
 }  // namespace
 
-Scene makeCornellBox() {
+Scene makeCornellBox(const ParameterValues&) {
   Scene scene;
   scene.name = "cornell";
   scene.provenance =

@@ -6,7 +6,7 @@
 
 namespace gib::scene {
 
-Scene makeFurnace() {
+Scene makeFurnace(const ParameterValues&) {
   Scene scene;
   scene.name = "furnace";
   scene.provenance = "analytic test scene: L = Le / (1 - albedo) = 1";

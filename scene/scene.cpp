@@ -101,6 +101,15 @@ void validateScene(const Scene& scene) {
     validateRgb(l.irradiance, "directional light irradiance");
   }
   validateRgb(scene.sky_radiance, "sky radiance");
+  validateRgb(scene.medium.albedo, "medium albedo");
+  for (int c = 0; c < 3; ++c)
+    require(scene.medium.albedo[c] <= 1.0f, "medium albedo must be <= 1 (a medium cannot gain energy)");
+  require(std::isfinite(scene.medium.g) && scene.medium.g > -1 && scene.medium.g < 1,
+          fmt::format("medium g must be in (-1, 1), got {}", scene.medium.g));
+  for (const MediumParticle& p : scene.medium.particles)
+    require(isFinite(p.centre) && std::isfinite(p.radius) && p.radius > 0 &&
+                std::isfinite(p.density) && p.density >= 0,
+            "medium particles need a finite centre, a positive radius and a density >= 0");
   validateCamera(scene.camera);
   require(scene.default_width > 0 && scene.default_height > 0,
           "scene default image size must be positive");
@@ -143,6 +152,14 @@ std::string hashScene(const Scene& scene) {
     addVec(l.irradiance);
   }
   addVec(scene.sky_radiance);
+  h.addU64(scene.medium.particles.size());
+  for (const MediumParticle& p : scene.medium.particles) {
+    addVec(p.centre);
+    h.addFloat(p.radius);
+    h.addFloat(p.density);
+  }
+  addVec(scene.medium.albedo);
+  h.addFloat(scene.medium.g);
   addVec(scene.camera.position);
   addVec(scene.camera.look_at);
   addVec(scene.camera.up);

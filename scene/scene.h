@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gib::scene {
@@ -64,6 +65,24 @@ struct DirectionalLight {
   Rgb irradiance{0.0f};
 };
 
+// A particle of a participating medium: σt(p) = density·(1 − |p − centre|/radius) inside it.
+struct MediumParticle {
+  glm::vec3 centre{0.0f};
+  float radius = 1.0f;
+  float density = 1.0f;  // τ: extinction coefficient at the centre, per scene unit
+};
+
+// A medium made of particles (the cloud), with one single-scattering albedo σs/σt and one
+// Henyey–Greenstein phase function for all of it. Surfaces and medium may coexist; the medium has
+// no boundary surface (its density fades to zero at the particles' edges).
+struct Medium {
+  std::vector<MediumParticle> particles;
+  Rgb albedo{0.9f};
+  float g = 0.0f;  // Henyey–Greenstein asymmetry in (−1, 1)
+
+  bool empty() const { return particles.empty(); }
+};
+
 // Pinhole camera, right-handed world. The image's pixel (0,0) is at the top left and pixel
 // centres are at +0.5 (see camera.h for the exact ray of a pixel).
 struct Camera {
@@ -76,12 +95,16 @@ struct Camera {
 struct Scene {
   std::string name;
   std::string provenance;  // where the data comes from; recorded in outputs, not hashed
+  // The built-in scene's parameter values ("key", "value"), recorded in outputs; not hashed
+  // (what they change, the geometry, lights and camera, is).
+  std::vector<std::pair<std::string, std::string>> parameters;
   Camera camera;
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
   std::vector<SpotLight> spot_lights;
   std::vector<DirectionalLight> directional_lights;
   Rgb sky_radiance{0.0f};  // constant radiance of rays that leave the scene
+  Medium medium;
   int default_width = 512;
   int default_height = 512;
 

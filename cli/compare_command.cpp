@@ -1,0 +1,146 @@
+// gibench compare REFERENCE.exr TEST.exr [--metrics all|name,...] [--maps DIR] [--json]
+#include "cli/commands.h"
+#include "common/input_error.h"
+#include "gib/version.h"
+#include "image/display.h"
+#include "image/exr_io.h"
+#include "image/false_color.h"
+#include "metrics/metric_registry.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+namespace gib::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CompareOptions {
+  std::string reference;
+  std::string test;
+  std::string metrics = "all";
+  std::string maps;
+  bool json = false;
+  double pixels_per_degree = 67.0;
+  double epsilon = metrics::kRelativeEpsilon;
+  bool reject_outliers = false;
+};
+
+// The colour range a person reads best for each map: FLIP and SSIM have natural ranges, the
+// others go from zero to their 99th percentile so that one firefly does not hide the rest.
+std::pair<float, float> displayRange(const std::string& name, const image::Image& map) {
+  if (name == "flip" || name == "hdrflip") return {0.0f, 1.0f};
+  if (name == "ssim") return {0.0f, 1.0f};
+  std::vector<float> values;
+  for (float v : map.data())
+    if (std::isfinite(v)) values.push_back(v);
+  if (values.empty()) return {0.0f, 1.0f};
+  auto k = values.begin() + std::ptrdiff_t(0.99 * double(values.size() - 1));
+  std::nth_element(values.begin(), k, values.end());
+  return {0.0f, *k > 0 ? *k : 1.0f};
+}
+
+void writeMaps(const fs::path& dir, const metrics::MetricReport& report,
+               const image::Metadata& metadata) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir))
+    throw InputError(fmt::format("cannot create the maps directory '{}'; choose another --maps",
+                                 dir.string()));
+  for (const auto& [name, map] : report.maps) {
+    image::Metadata m = metadata;
+    m["gibench/metric"] = name;
+    image::writeExr(dir / (name + ".exr"), {{name, map}}, m);
+    auto [low, high] = displayRange(name, map);
+    image::writePng(dir / (name + ".png"), image::falseColorWithBar(map, low, high));
+  }
+}
+
+image::Image loadRgb(const std::string& path, const char* role) {
+  image::ExrFile file = image::readExr(path);
+  const image::Image* rgb = file.findLayer("");
+  if (!rgb)
+    throw InputError(fmt::format("{} image '{}' has no R, G, B channels; give an RGB EXR", role,
+                                 path));
+  return *rgb;
+}
+
+int runCompare(const CompareOptions& o) {
+  const std::vector<std::string> names = metrics::parseMetricList(o.metrics);
+  if (!(o.pixels_per_degree > 0))
+    throw InputError("--ppd must be positive (67 is a 0.7 m wide 4K monitor seen from 0.7 m)");
+  if (!(o.epsilon > 0)) throw InputError("--epsilon must be positive");
+  const image::Image reference = loadRgb(o.reference, "reference");
+  const image::Image test = loadRgb(o.test, "test");
+  if (reference.width() != test.width() || reference.height() != test.height())
+    throw InputError(fmt::format(
+        "reference is {}x{} but test is {}x{}; render both at the same --width and --height",
+        reference.width(), reference.height(), test.width(), test.height()));
+  if (std::size_t bad = image::countNonFinite(reference); bad > 0)
+    throw InputError(fmt::format("reference '{}' has {} NaN or infinite pixels; re-render it",
+                                 o.reference, bad));
+  if (!o.maps.empty() && fs::exists(o.maps) && !fs::is_directory(o.maps))
+    throw InputError(fmt::format("--maps '{}' is a file; give a directory", o.maps));
+
+  metrics::MetricOptions options;
+  options.flip.pixels_per_degree = o.pixels_per_degree;
+  options.relative_epsilon = o.epsilon;
+  options.reject_outliers = o.reject_outliers;
+  const metrics::MetricReport report = metrics::evaluateMetrics(reference, test, names, options);
+
+  if (!o.maps.empty()) {
+    image::Metadata metadata = {{"gibench/program", kProgramName},
+                                {"gibench/version", kVersion},
+                                {"gibench/reference", o.reference},
+                                {"gibench/test", o.test}};
+    writeMaps(o.maps, report, metadata);
+  }
+
+  if (o.json) {
+    nlohmann::ordered_json j;
+    for (const auto& [name, value] : report.values)
+      j["metrics"][name] = std::isfinite(value) ? nlohmann::ordered_json(value)
+                                                : nlohmann::ordered_json(fmt::format("{}", value));
+    j["nonfinite"] = report.nonfinite_pixels;
+    j["width"] = reference.width();
+    j["height"] = reference.height();
+    j["reference"] = o.reference;
+    j["test"] = o.test;
+    j["pixels_per_degree"] = o.pixels_per_degree;
+    j["version"] = kVersion;
+    fmt::print("{}\n", j.dump());
+    return 0;
+  }
+  fmt::print("{:<16} {}\n", "metric", "value");
+  for (const auto& [name, value] : report.values) fmt::print("{:<16} {:.6g}\n", name, value);
+  fmt::print("{:<16} {}\n", "nonfinite", report.nonfinite_pixels);
+  if (!o.maps.empty()) fmt::print("maps in {}\n", o.maps);
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner addCompareCommand(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* compare = app.add_subcommand("compare", "Measure a test image against a reference");
+  compare->add_option("reference", o->reference, "reference EXR")->required();
+  compare->add_option("test", o->test, "test EXR")->required();
+  compare->add_option("--metrics", o->metrics, "all, or a comma-separated list (gibench list metrics)")
+      ->capture_default_str();
+  compare->add_option("--maps", o->maps, "write per-pixel error maps (EXR and false-colour PNG) here");
+  compare->add_flag("--json", o->json, "print one JSON object instead of a table");
+  compare->add_option("--ppd", o->pixels_per_degree, "FLIP viewing condition: pixels per degree")
+      ->capture_default_str();
+  compare->add_option("--epsilon", o->epsilon, "epsilon of relmse, mape and smape")
+      ->capture_default_str();
+  compare->add_flag("--reject-outliers", o->reject_outliers,
+                    "relmse without the largest 0.1% of pixel values");
+  return [o] { return runCompare(*o); };
+}
+
+}  // namespace gib::cli

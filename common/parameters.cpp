@@ -1,0 +1,158 @@
+#include "common/parameters.h"
+
+#include "common/input_error.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace gib {
+
+namespace {
+
+const char* typeName(ParameterType type) {
+  switch (type) {
+    case ParameterType::kInteger: return "integer";
+    case ParameterType::kNumber: return "number";
+    case ParameterType::kVector3: return "x,y,z";
+    case ParameterType::kChoice: return "choice";
+  }
+  return "?";
+}
+
+std::string rangeText(const ParameterSpec& spec) {
+  if (spec.type == ParameterType::kChoice) {
+    std::string all;
+    for (const std::string& c : spec.choices) all += (all.empty() ? "" : "|") + c;
+    return all;
+  }
+  return fmt::format("[{}, {}]{}{}", spec.min, spec.max, spec.unit.empty() ? "" : " ", spec.unit);
+}
+
+bool parseDouble(const std::string& text, double& value) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text.c_str(), &end);
+  return errno == 0 && end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+// Returns the canonical text of a valid value; throws InputError otherwise.
+std::string canonicalValue(const ParameterSpec& spec, const std::string& text,
+                           std::string_view owner) {
+  auto bad = [&](const std::string& why) {
+    return InputError(fmt::format("{} parameter '{}' = '{}' {}; give a {} in {}", owner,
+                                  spec.name, text, why, typeName(spec.type), rangeText(spec)));
+  };
+  switch (spec.type) {
+    case ParameterType::kChoice:
+      for (const std::string& c : spec.choices)
+        if (c == text) return text;
+      throw bad("is not one of the choices");
+    case ParameterType::kInteger: {
+      double v = 0;
+      if (!parseDouble(text, v) || v != std::floor(v)) throw bad("is not an integer");
+      if (v < spec.min || v > spec.max) throw bad("is out of range");
+      return fmt::format("{}", static_cast<long long>(v));
+    }
+    case ParameterType::kNumber: {
+      double v = 0;
+      if (!parseDouble(text, v)) throw bad("is not a number");
+      if (v < spec.min || v > spec.max) throw bad("is out of range");
+      return fmt::format("{}", v);
+    }
+    case ParameterType::kVector3: {
+      std::vector<std::string> parts;
+      std::size_t start = 0;
+      for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos;
+           start = comma + 1)
+        parts.push_back(text.substr(start, comma - start));
+      parts.push_back(text.substr(start));
+      if (parts.size() != 3) throw bad("does not have three components");
+      std::string canonical;
+      for (const std::string& p : parts) {
+        double v = 0;
+        if (!parseDouble(p, v)) throw bad("has a component that is not a number");
+        if (v < spec.min || v > spec.max) throw bad("has a component out of range");
+        canonical += (canonical.empty() ? "" : ",") + fmt::format("{}", v);
+      }
+      return canonical;
+    }
+  }
+  throw std::logic_error("unknown parameter type");
+}
+
+}  // namespace
+
+const std::string& ParameterValues::find(std::string_view name) const {
+  for (const auto& [key, value] : values_)
+    if (key == name) return value;
+  throw std::logic_error(fmt::format("parameter '{}' is not declared", name));
+}
+
+const std::string& ParameterValues::text(std::string_view name) const { return find(name); }
+
+double ParameterValues::number(std::string_view name) const { return std::stod(find(name)); }
+
+int ParameterValues::integer(std::string_view name) const { return std::stoi(find(name)); }
+
+std::vector<double> ParameterValues::vector3(std::string_view name) const {
+  const std::string& text = find(name);
+  std::vector<double> v;
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    std::size_t comma = text.find(',', start);
+    v.push_back(std::stod(text.substr(start, comma - start)));
+    start = comma + 1;
+  }
+  return v;
+}
+
+std::vector<std::pair<std::string, std::string>> ParameterValues::canonical() const {
+  return values_;
+}
+
+ParameterValues parseParameters(const ParameterTable& table,
+                                const std::vector<std::string>& assignments,
+                                std::string_view owner) {
+  std::map<std::string, std::string> given;
+  for (const std::string& assignment : assignments) {
+    const std::size_t eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError(fmt::format("'{}' is not a key=value assignment for {}", assignment, owner));
+    const std::string key = assignment.substr(0, eq);
+    const ParameterSpec* spec = nullptr;
+    for (const ParameterSpec& s : table)
+      if (s.name == key) spec = &s;
+    if (!spec) {
+      std::string known;
+      for (const ParameterSpec& s : table) known += (known.empty() ? "" : ", ") + s.name;
+      throw InputError(fmt::format("{} has no parameter '{}'; {}", owner, key,
+                                   known.empty() ? "it takes none" : "its parameters are " + known));
+    }
+    if (given.count(key))
+      throw InputError(fmt::format("{} parameter '{}' is given twice; give it once", owner, key));
+    given[key] = canonicalValue(*spec, assignment.substr(eq + 1), owner);
+  }
+  ParameterValues values;
+  for (const ParameterSpec& spec : table) {
+    auto it = given.find(spec.name);
+    values.values_.emplace_back(spec.name, it != given.end()
+                                               ? it->second
+                                               : canonicalValue(spec, spec.default_value, owner));
+  }
+  return values;
+}
+
+std::vector<std::string> describeParameters(const ParameterTable& table) {
+  std::vector<std::string> lines;
+  for (const ParameterSpec& s : table)
+    lines.push_back(fmt::format("{} ({}, default {}, {}): {}", s.name, typeName(s.type),
+                                s.default_value, rangeText(s), s.doc));
+  return lines;
+}
+
+}  // namespace gib

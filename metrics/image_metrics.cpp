@@ -1,0 +1,126 @@
+#include "metrics/image_metrics.h"
+
+#include "metrics/tone_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace gib::metrics {
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+bool pixelIsFinite(const float* p) {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+// The per-pixel map of `channel_error` averaged over R, G, B, and the mean over finite pixels.
+// Sums run in double and in pixel order, so the result does not depend on anything but the data.
+template <typename ChannelError>
+MetricValue perPixelMean(const image::Image& reference, const image::Image& test,
+                         ChannelError channel_error) {
+  requireComparable(reference, test);
+  MetricValue result;
+  result.map = image::Image(reference.width(), reference.height(), 1);
+  double sum = 0;
+  std::size_t count = 0;
+  for (int y = 0; y < reference.height(); ++y)
+    for (int x = 0; x < reference.width(); ++x) {
+      const float* r = reference.pixel(x, y);
+      const float* t = test.pixel(x, y);
+      float& out = result.map.pixel(x, y)[0];
+      if (!pixelIsFinite(r) || !pixelIsFinite(t)) {
+        out = kNaN;
+        continue;
+      }
+      double e = (channel_error(r[0], t[0]) + channel_error(r[1], t[1]) +
+                  channel_error(r[2], t[2])) /
+                 3.0;
+      out = float(e);
+      sum += e;
+      ++count;
+    }
+  result.value = count > 0 ? sum / double(count) : kNaN;
+  return result;
+}
+
+}  // namespace
+
+void requireComparable(const image::Image& reference, const image::Image& test) {
+  if (reference.channels() != 3 || test.channels() != 3)
+    throw std::invalid_argument("image metrics need 3-channel RGB images");
+  if (reference.width() != test.width() || reference.height() != test.height())
+    throw std::invalid_argument("image metrics need images of the same size");
+}
+
+MetricValue computeMse(const image::Image& reference, const image::Image& test) {
+  return perPixelMean(reference, test, [](double r, double t) { return (t - r) * (t - r); });
+}
+
+MetricValue computeRmse(const image::Image& reference, const image::Image& test) {
+  MetricValue mse = computeMse(reference, test);
+  for (float& v : mse.map.data()) v = std::sqrt(v);
+  mse.value = std::sqrt(mse.value);
+  return mse;
+}
+
+MetricValue computeMae(const image::Image& reference, const image::Image& test) {
+  return perPixelMean(reference, test, [](double r, double t) { return std::abs(t - r); });
+}
+
+MetricValue computeRelMse(const image::Image& reference, const image::Image& test, double epsilon,
+                          bool reject_outliers) {
+  MetricValue result = perPixelMean(reference, test, [epsilon](double r, double t) {
+    return (t - r) * (t - r) / (r * r + epsilon);
+  });
+  if (!reject_outliers) return result;
+  // Drop the largest 0.1% of the per-pixel values (fireflies), then average the rest.
+  std::vector<float> values;
+  for (float v : result.map.data())
+    if (std::isfinite(v)) values.push_back(v);
+  if (values.empty()) return result;
+  std::sort(values.begin(), values.end());
+  const auto kept = values.size() - std::size_t(std::floor(kRelMseRejectedFraction * values.size()));
+  double sum = 0;
+  for (std::size_t i = 0; i < kept; ++i) sum += values[i];
+  result.value = sum / double(kept);
+  return result;
+}
+
+MetricValue computeMape(const image::Image& reference, const image::Image& test, double epsilon) {
+  return perPixelMean(reference, test, [epsilon](double r, double t) {
+    return std::abs(t - r) / (std::abs(r) + epsilon);
+  });
+}
+
+MetricValue computeSmape(const image::Image& reference, const image::Image& test, double epsilon) {
+  return perPixelMean(reference, test, [epsilon](double r, double t) {
+    return 2.0 * std::abs(t - r) / (std::abs(t) + std::abs(r) + epsilon);
+  });
+}
+
+MetricValue computePsnr(const image::Image& reference, const image::Image& test) {
+  MetricValue mse = perPixelMean(reference, test, [](float r, float t) {
+    double d = double(displayEncode(t)) - double(displayEncode(r));
+    return d * d;
+  });
+  MetricValue result;
+  result.value = mse.value > 0 ? 10.0 * std::log10(1.0 / mse.value)
+                               : std::numeric_limits<double>::infinity();
+  return result;
+}
+
+std::size_t countNonFiniteInEither(const image::Image& reference, const image::Image& test) {
+  requireComparable(reference, test);
+  std::size_t count = 0;
+  for (int y = 0; y < reference.height(); ++y)
+    for (int x = 0; x < reference.width(); ++x)
+      count += !pixelIsFinite(reference.pixel(x, y)) || !pixelIsFinite(test.pixel(x, y));
+  return count;
+}
+
+}  // namespace gib::metrics

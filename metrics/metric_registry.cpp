@@ -1,0 +1,133 @@
+#include "metrics/metric_registry.h"
+
+#include "common/input_error.h"
+#include "metrics/ssim.h"
+
+#include <fmt/format.h>
+
+#include <functional>
+#include <stdexcept>
+
+namespace gib::metrics {
+
+namespace {
+
+using Evaluator = std::function<void(const image::Image&, const image::Image&,
+                                     const MetricOptions&, MetricReport&)>;
+
+struct MetricEntry {
+  MetricInfo info;
+  Evaluator evaluate;
+};
+
+// A metric with one figure and a map under its own name.
+Evaluator scalar(const char* name,
+                 std::function<MetricValue(const image::Image&, const image::Image&,
+                                           const MetricOptions&)>
+                     compute) {
+  return [name, compute](const image::Image& r, const image::Image& t, const MetricOptions& o,
+                         MetricReport& report) {
+    MetricValue v = compute(r, t, o);
+    report.values.emplace_back(name, v.value);
+    if (v.map.pixelCount() > 0) report.maps.emplace_back(name, std::move(v.map));
+  };
+}
+
+// FLIP's figures: the mean, the weighted median and quartiles, the maximum, and the map.
+void addFlip(const std::string& prefix, FlipResult flip, MetricReport& report) {
+  report.values.emplace_back(prefix + "_mean", flip.mean);
+  report.values.emplace_back(prefix + "_median", flip.weighted_median);
+  report.values.emplace_back(prefix + "_q1", flip.weighted_first_quartile);
+  report.values.emplace_back(prefix + "_q3", flip.weighted_third_quartile);
+  report.values.emplace_back(prefix + "_max", flip.maximum);
+  report.maps.emplace_back(prefix, std::move(flip.error_map));
+}
+
+const std::vector<MetricEntry>& entries() {
+  static const std::vector<MetricEntry> table = {
+      {{"mse", "mean squared error of linear RGB"},
+       scalar("mse", [](auto& r, auto& t, auto&) { return computeMse(r, t); })},
+      {{"rmse", "root mean squared error of linear RGB"},
+       scalar("rmse", [](auto& r, auto& t, auto&) { return computeRmse(r, t); })},
+      {{"mae", "mean absolute error of linear RGB"},
+       scalar("mae", [](auto& r, auto& t, auto&) { return computeMae(r, t); })},
+      {{"relmse", "relative MSE (x-r)^2/(r^2+eps), eps = 0.01; --reject-outliers drops the top 0.1%"},
+       scalar("relmse",
+              [](auto& r, auto& t, auto& o) {
+                return computeRelMse(r, t, o.relative_epsilon, o.reject_outliers);
+              })},
+      {{"mape", "mean absolute percentage error |x-r|/(|r|+eps)"},
+       scalar("mape", [](auto& r, auto& t, auto& o) { return computeMape(r, t, o.relative_epsilon); })},
+      {{"smape", "symmetric MAPE 2|x-r|/(|x|+|r|+eps)"},
+       scalar("smape",
+              [](auto& r, auto& t, auto& o) { return computeSmape(r, t, o.relative_epsilon); })},
+      {{"psnr", "PSNR in dB after clamping to [0,1] and the sRGB curve"},
+       scalar("psnr", [](auto& r, auto& t, auto&) { return computePsnr(r, t); })},
+      {{"ssim", "SSIM of display luminance (11x11 Gaussian window, sigma 1.5)"},
+       scalar("ssim", [](auto& r, auto& t, auto&) { return computeSsim(r, t); })},
+      {{"flip", "LDR-FLIP (Andersson et al. 2020): mean, weighted median and quartiles, max"},
+       [](auto& r, auto& t, auto& o, MetricReport& report) {
+         addFlip("flip", computeLdrFlip(r, t, o.flip), report);
+       }},
+      {{"hdrflip", "HDR-FLIP (Andersson et al. 2021): mean, weighted median and quartiles, max"},
+       [](auto& r, auto& t, auto& o, MetricReport& report) {
+         addFlip("hdrflip", computeHdrFlip(r, t, o.flip), report);
+       }},
+  };
+  return table;
+}
+
+}  // namespace
+
+const std::vector<MetricInfo>& metricCatalogue() {
+  static const std::vector<MetricInfo> infos = [] {
+    std::vector<MetricInfo> result;
+    for (const MetricEntry& e : entries()) result.push_back(e.info);
+    return result;
+  }();
+  return infos;
+}
+
+std::vector<std::string> parseMetricList(std::string_view list) {
+  std::vector<std::string> names;
+  if (list == "all") {
+    for (const MetricEntry& e : entries()) names.push_back(e.info.name);
+    return names;
+  }
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    std::size_t end = std::min(list.find(',', start), list.size());
+    std::string name(list.substr(start, end - start));
+    bool known = false;
+    for (const MetricEntry& e : entries()) known = known || e.info.name == name;
+    if (!known) {
+      std::string all;
+      for (const MetricEntry& e : entries()) all += (all.empty() ? "" : ", ") + e.info.name;
+      throw InputError(fmt::format("unknown metric '{}'; choose 'all' or a comma-separated list of: {}",
+                                   name, all));
+    }
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    start = end + 1;
+  }
+  return names;
+}
+
+double MetricReport::value(std::string_view name) const {
+  for (const auto& [key, v] : values)
+    if (key == name) return v;
+  throw std::out_of_range(fmt::format("no figure '{}' in the metric report", name));
+}
+
+MetricReport evaluateMetrics(const image::Image& reference, const image::Image& test,
+                             const std::vector<std::string>& names, const MetricOptions& options) {
+  requireComparable(reference, test);
+  MetricReport report;
+  report.nonfinite_pixels = image::countNonFinite(test);
+  // Report order is the catalogue's, whatever order the names came in.
+  for (const MetricEntry& e : entries())
+    if (std::find(names.begin(), names.end(), e.info.name) != names.end())
+      e.evaluate(reference, test, options, report);
+  return report;
+}
+
+}  // namespace gib::metrics
