@@ -29,6 +29,8 @@ constexpr float kAcesK1 = 0.6f * 0.03f;
 constexpr float kAcesK3 = 0.6f * 0.6f * 2.43f;
 constexpr float kAcesK4 = 0.6f * 0.59f;
 constexpr float kAcesK5 = 0.14f;
+// |c| above this is clamped before tone mapping: c² stays finite in float.
+constexpr double kToneMapInputBound = 1e18;
 // The exposure range maps the reference's maximum and median luminance to this tone-mapped
 // value (HDR-FLIP paper, exposure range; NVlabs/flip v1.6).
 constexpr double kExposureTarget = 0.85;
@@ -175,9 +177,11 @@ FlipResult computeHdrFlip(const image::Image& reference, const image::Image& tes
                                                      (range.exposure_count - 1)
                                                : 0.0;
   for (int i = 0; i < range.exposure_count; ++i) {
-    const float scale = float(std::exp2(range.start_exposure + i * step));
+    const double scale = std::exp2(range.start_exposure + i * step);
     const auto toneMap = [scale](float v) {
-      const float c = scale * v;
+      // Exposed in double and limited, so that neither 2^exposure nor c² overflows a float;
+      // the curve reaches its limit long before the bound.
+      const float c = float(std::clamp(scale * double(v), -kToneMapInputBound, kToneMapInputBound));
       return (kAcesK0 * c * c + kAcesK1 * c) / (kAcesK3 * c * c + kAcesK4 * c + kAcesK5);
     };
     toOpponent(reference, toneMap, evaluator.reference());

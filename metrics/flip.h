@@ -63,8 +63,8 @@ struct FlipExposureRange {
 
 struct HdrFlipOptions {
   // Each one left empty is computed from the reference (computeFlipExposureRange).
-  std::optional<double> start_exposure, stop_exposure;
-  std::optional<int> exposure_count;
+  std::optional<double> start_exposure = {}, stop_exposure = {};
+  std::optional<int> exposure_count = {};
 };
 
 // The automatic exposure range of HDR-FLIP (HDR-FLIP paper, exposure range; ACES tone mapper):

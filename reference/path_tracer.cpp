@@ -1,8 +1,5 @@
 #include "reference/path_tracer.h"
 
-#include "reference/bsdf.h"
-#include "reference/sampling.h"
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -15,6 +12,8 @@ using scene::Rgb;
 
 namespace {
 
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
 // Power heuristic (β = 2) for one sample from each of two strategies.
 float powerHeuristic(float pdf_a, float pdf_b) {
   float a = pdf_a * pdf_a;
@@ -22,29 +21,9 @@ float powerHeuristic(float pdf_a, float pdf_b) {
   return a + b > 0 ? a / (a + b) : 0.0f;
 }
 
-float maxComponent(const Rgb& c) {
-  return std::max(c.r, std::max(c.g, c.b));
-}
+float maxComponent(const Rgb& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
 }  // namespace
-
-// Shadow rays run from the offset origin to the target point itself, stopping `epsilon` short of
-// it so that the surface the target lies on is not found.
-bool PathTracer::segmentIsClear(const glm::vec3& origin, const glm::vec3& target) const {
-  glm::vec3 d = target - origin;
-  float length = glm::length(d);
-  float eps = embree_.rayEpsilon();
-  if (length <= 2 * eps) return true;
-  return !embree_.occluded(origin, d / length, 0.0f, length - eps);
-}
-
-struct PathTracer::Vertex {
-  glm::vec3 point;
-  glm::vec3 normal;  // geometric normal turned towards wo
-  const Bsdf* bsdf;
-  float epsilon;
-  glm::vec3 spawnOrigin() const { return point + epsilon * normal; }
-};
 
 PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class)
     : scene_(scene),
@@ -52,89 +31,103 @@ PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class)
       embree_(scene),
       triangles_(scene),
       area_lights_(scene, triangles_),
-      has_sky_(maxComponent(scene.sky_radiance) > 0) {}
+      density_(scene.medium.particles),
+      has_sky_(maxComponent(scene.sky_radiance) > 0) {
+  if (!density_.empty()) medium_.emplace(density_);
+}
 
-Rgb PathTracer::estimateDirect(const Vertex& v, SampleStream& random, std::uint32_t& rays) const {
-  Rgb result(0.0f);
-  // Geometry (distances, cosines) is measured from the surface point itself; only shadow rays
+float PathTracer::segmentTransmittance(const glm::vec3& origin, const glm::vec3& target,
+                                       SampleStream& random, std::uint32_t& rays) const {
+  // Shadow rays stop `epsilon` short of the target so that the surface it lies on is not found.
+  glm::vec3 d = target - origin;
+  float length = glm::length(d);
+  float eps = embree_.rayEpsilon();
+  if (length <= 2 * eps) return 1.0f;
+  d /= length;
+  ++rays;
+  if (embree_.occluded(origin, d, 0.0f, length - eps)) return 0.0f;
+  return medium_ ? medium_->transmittance(origin, d, length, random) : 1.0f;
+}
+
+float PathTracer::rayTransmittance(const glm::vec3& origin, const glm::vec3& direction,
+                                   SampleStream& random, std::uint32_t& rays) const {
+  ++rays;
+  if (embree_.occluded(origin, direction, 0.0f, kInfinity)) return 0.0f;
+  return medium_ ? medium_->transmittance(origin, direction, kInfinity, random) : 1.0f;
+}
+
+Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
+                               std::uint32_t& rays) const {
+  // Geometry (distances, cosines) is measured from the scattering point itself; only shadow rays
   // start from the offset origin, so the offset does not bias inverse-square falloff.
+  Rgb result(0.0f);
   const glm::vec3 origin = v.spawnOrigin();
-  const float eps = v.epsilon;
 
-  // Area lights: one point chosen by power, weighted against BSDF sampling.
+  // Area lights: one point chosen by power, weighted against BSDF or phase sampling.
   if (!area_lights_.empty()) {
-    float u_select = random.next();
-    glm::vec2 u_point(random.next(), random.next());
-    AreaLightSample s = area_lights_.sample(u_select, u_point);
+    const float u_select = random.next();
+    const glm::vec2 u_point(random.next(), random.next());
+    const AreaLightSample s = area_lights_.sample(u_select, u_point);
     const TriangleRecord& light = triangles_[s.triangle];
-    glm::vec3 to_light = s.point - v.point;
-    float dist2 = glm::dot(to_light, to_light);
-    float dist = std::sqrt(dist2);
-    glm::vec3 wi = to_light / dist;
-    float cos_light = -glm::dot(light.normal, wi);
-    float cos_surface = glm::dot(v.normal, wi);
-    if (cos_light > 0 && cos_surface > 0 && dist > 2 * eps) {
-      Rgb f = v.bsdf->evaluate(wi);
-      if (maxComponent(f) > 0) {
-        ++rays;
-        if (segmentIsClear(origin, s.point)) {
-          float pdf_light = s.pdf_area * dist2 / cos_light;
-          float weight = powerHeuristic(pdf_light, v.bsdf->pdf(wi));
-          result +=
-              f * scene_.materials[light.material].emission * (cos_surface * weight / pdf_light);
-        }
+    const glm::vec3 to_light = s.point - v.point;
+    const float dist2 = glm::dot(to_light, to_light);
+    const glm::vec3 wi = to_light / std::sqrt(dist2);
+    const float cos_light = -glm::dot(light.normal, wi);
+    const Rgb f = v.evaluate(wi);
+    if (cos_light > 0 && dist2 > 0 && maxComponent(f) > 0) {
+      const float transmittance = segmentTransmittance(origin, s.point, random, rays);
+      if (transmittance > 0) {
+        const float pdf_light = s.pdf_area * dist2 / cos_light;
+        const float weight = powerHeuristic(pdf_light, v.pdf(wi));
+        result += f * scene_.materials[light.material].emission *
+                  (transmittance * weight / pdf_light);
       }
     }
   }
 
-  // Constant sky: a uniform direction on the hemisphere, weighted against BSDF sampling.
+  // Constant sky: a uniform direction, weighted against BSDF or phase sampling.
   if (has_sky_) {
-    glm::vec3 wi = Frame(v.normal).toWorld(sampleUniformHemisphere({random.next(), random.next()}));
-    float cos_surface = glm::dot(v.normal, wi);
-    Rgb f = v.bsdf->evaluate(wi);
-    if (cos_surface > 0 && maxComponent(f) > 0) {
-      ++rays;
-      if (!embree_.occluded(origin, wi, 0.0f, std::numeric_limits<float>::infinity())) {
-        float weight = powerHeuristic(kUniformHemispherePdf, v.bsdf->pdf(wi));
-        result += f * scene_.sky_radiance * (cos_surface * weight / kUniformHemispherePdf);
-      }
+    const glm::vec3 wi = v.sampleSkyDirection({random.next(), random.next()});
+    const Rgb f = v.evaluate(wi);
+    const float pdf_sky = v.skyPdf(wi);
+    if (pdf_sky > 0 && maxComponent(f) > 0) {
+      const float transmittance = rayTransmittance(origin, wi, random, rays);
+      if (transmittance > 0)
+        result += f * scene_.sky_radiance *
+                  (transmittance * powerHeuristic(pdf_sky, v.pdf(wi)) / pdf_sky);
     }
   }
 
   // Spot lights: I(θ) = I·cosᵏθ inside the cone; irradiance I·cos/d².
   for (const scene::SpotLight& spot : scene_.spot_lights) {
-    glm::vec3 to_light = spot.position - v.point;
-    float dist2 = glm::dot(to_light, to_light);
-    float dist = std::sqrt(dist2);
-    glm::vec3 wi = to_light / dist;
-    float cos_surface = glm::dot(v.normal, wi);
-    float cos_axis = -glm::dot(wi, glm::normalize(spot.direction));
-    float cos_cone = std::cos(glm::radians(spot.cone_angle_deg));
-    if (cos_surface <= 0 || cos_axis < cos_cone || dist <= eps) continue;
-    Rgb f = v.bsdf->evaluate(wi);
+    const glm::vec3 to_light = spot.position - v.point;
+    const float dist2 = glm::dot(to_light, to_light);
+    const glm::vec3 wi = to_light / std::sqrt(dist2);
+    const float cos_axis = -glm::dot(wi, glm::normalize(spot.direction));
+    if (cos_axis < std::cos(glm::radians(spot.cone_angle_deg))) continue;
+    const Rgb f = v.evaluate(wi);
     if (maxComponent(f) <= 0) continue;
-    ++rays;
-    if (!segmentIsClear(origin, spot.position)) continue;
-    Rgb intensity = spot.intensity * std::pow(std::max(cos_axis, 0.0f), spot.falloff_exponent);
-    result += f * intensity * (cos_surface / dist2);
+    const float transmittance = segmentTransmittance(origin, spot.position, random, rays);
+    if (transmittance <= 0) continue;
+    const Rgb intensity =
+        spot.intensity * std::pow(std::max(cos_axis, 0.0f), spot.falloff_exponent);
+    result += f * intensity * (transmittance / dist2);
   }
 
-  // Directional lights: irradiance E·cos on the surface.
+  // Directional lights: irradiance E on a plane perpendicular to the light.
   for (const scene::DirectionalLight& sun : scene_.directional_lights) {
-    glm::vec3 wi = -glm::normalize(sun.direction);
-    float cos_surface = glm::dot(v.normal, wi);
-    if (cos_surface <= 0) continue;
-    Rgb f = v.bsdf->evaluate(wi);
+    const glm::vec3 wi = -glm::normalize(sun.direction);
+    const Rgb f = v.evaluate(wi);
     if (maxComponent(f) <= 0) continue;
-    ++rays;
-    if (embree_.occluded(origin, wi, 0.0f, std::numeric_limits<float>::infinity())) continue;
-    result += f * sun.irradiance * cos_surface;
+    const float transmittance = rayTransmittance(origin, wi, random, rays);
+    if (transmittance > 0) result += f * sun.irradiance * transmittance;
   }
   return result;
 }
 
 RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
-                                    const glm::vec3& camera_direction, SampleStream& random) const {
+                                    const glm::vec3& camera_direction,
+                                    SampleStream& random) const {
   RadianceSample out;
   auto record = [&](int bounces, const Rgb& contribution) {
     if (!path_class_.contains(bounces)) return;
@@ -145,70 +138,105 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
   glm::vec3 origin = camera_origin;
   glm::vec3 direction = camera_direction;
   Rgb throughput(1.0f);
-  int bounces = 0;               // scattering vertices so far
-  float previous_bsdf_pdf = 0;   // density of `direction` at the previous vertex
-  glm::vec3 previous_normal(0);  // that vertex's normal, for the sky's MIS density
+  int bounces = 0;  // scattering vertices so far
+  // What the MIS weight of emission reached by a sampled direction needs of the vertex that
+  // sampled it: the density of `direction` under its sampling, and where it was.
+  float previous_pdf = 0;
+  bool previous_in_medium = false;
+  glm::vec3 previous_normal(0.0f);
 
   for (;;) {
-    // Find the next vertex.
+    // Find the next surface, then whether the medium scatters the path before it.
     ++out.rays;
-    Hit hit = embree_.intersect(origin, direction);
-    if (!hit.valid()) {
+    const Hit hit = embree_.intersect(origin, direction);
+    const float t_surface = hit.valid() ? hit.t : kInfinity;
+    const float t_medium =
+        medium_ ? medium_->sampleCollision(origin, direction, t_surface, random) : kInfinity;
+
+    ScatteringVertex vertex;
+    std::optional<Bsdf> bsdf;
+    if (t_medium < t_surface) {
+      // A real collision in the medium: the albedo is the scattering share of it.
+      if (bounces >= path_class_.max_bounces) break;
+      vertex.point = origin + t_medium * direction;
+      vertex.direction = direction;
+      vertex.g = scene_.medium.g;
+      throughput *= scene_.medium.albedo;
+    } else if (!hit.valid()) {
+      // The path leaves the scene: the sky.
       if (has_sky_) {
-        float weight = 1.0f;
-        if (bounces > 0) {
-          float pdf_sky = glm::dot(previous_normal, direction) > 0 ? kUniformHemispherePdf : 0;
-          weight = powerHeuristic(previous_bsdf_pdf, pdf_sky);
-        }
+        const float weight =
+            bounces > 0 ? powerHeuristic(previous_pdf, skySamplingPdf(previous_in_medium,
+                                                                       previous_normal, direction))
+                        : 1.0f;
         record(bounces, throughput * scene_.sky_radiance * weight);
       }
       break;
-    }
-    const std::uint32_t tri_index = triangles_.globalIndex(hit.mesh, hit.triangle);
-    const TriangleRecord& tri = triangles_[tri_index];
-    const scene::Material& material = scene_.materials[tri.material];
-    const glm::vec3 wo = -direction;
-    const glm::vec3 point = origin + hit.t * direction;
+    } else {
+      const std::uint32_t tri_index = triangles_.globalIndex(hit.mesh, hit.triangle);
+      const TriangleRecord& tri = triangles_[tri_index];
+      const scene::Material& material = scene_.materials[tri.material];
+      const glm::vec3 wo = -direction;
 
-    // Emission reached by the camera ray or by BSDF sampling (one-sided: front faces only).
-    float cos_emitter = glm::dot(tri.normal, wo);
-    if (material.isEmissive() && cos_emitter > 0) {
-      float weight = 1.0f;
-      if (bounces > 0) {
-        float pdf_light = area_lights_.pdfArea(tri_index) * hit.t * hit.t / cos_emitter;
-        weight = powerHeuristic(previous_bsdf_pdf, pdf_light);
+      // Emission reached by the camera ray or by sampling (one-sided: front faces only).
+      const float cos_emitter = glm::dot(tri.normal, wo);
+      if (material.isEmissive() && cos_emitter > 0) {
+        float weight = 1.0f;
+        if (bounces > 0) {
+          const float pdf_light = area_lights_.pdfArea(tri_index) * hit.t * hit.t / cos_emitter;
+          weight = powerHeuristic(previous_pdf, pdf_light);
+        }
+        record(bounces, throughput * material.emission * weight);
       }
-      record(bounces, throughput * material.emission * weight);
+      if (bounces >= path_class_.max_bounces) break;
+      vertex.point = origin + hit.t * direction;
+      vertex.normal = cos_emitter >= 0 ? tri.normal : -tri.normal;
+      vertex.epsilon = embree_.rayEpsilon();
+      bsdf.emplace(material, vertex.normal, wo);
+      if (bsdf->isBlack()) break;
+      vertex.bsdf = &*bsdf;
     }
-    if (bounces >= path_class_.max_bounces) break;
 
     // Scatter: this vertex is bounce number `bounces`.
     ++bounces;
-    glm::vec3 normal = cos_emitter >= 0 ? tri.normal : -tri.normal;
-    Bsdf bsdf(material, normal, wo);
-    if (bsdf.isBlack()) break;
-    Vertex vertex{point, normal, &bsdf, embree_.rayEpsilon()};
     if (bounces >= path_class_.min_bounces)
       record(bounces, throughput * estimateDirect(vertex, random, out.rays));
 
-    // Continue the path by sampling the BSDF.
-    float u_lobe = random.next();
-    BsdfSample s = bsdf.sample(u_lobe, {random.next(), random.next()});
-    float cos_wi = glm::dot(normal, s.wi);
-    if (s.pdf <= 0 || cos_wi <= 0 || maxComponent(s.f) <= 0) break;
-    throughput *= s.f * (cos_wi / s.pdf);
+    // Continue the path by sampling the BSDF or the phase function.
+    glm::vec3 wi;
+    float pdf;
+    if (vertex.inMedium()) {
+      wi = sampleHenyeyGreenstein(direction, vertex.g, {random.next(), random.next()});
+      pdf = vertex.pdf(wi);
+      // The phase function is its own density: the weight f/pdf is exactly 1.
+    } else {
+      const float u_lobe = random.next();
+      const BsdfSample s = bsdf->sample(u_lobe, {random.next(), random.next()});
+      const float cos_wi = glm::dot(vertex.normal, s.wi);
+      if (s.pdf <= 0 || cos_wi <= 0 || maxComponent(s.f) <= 0) break;
+      wi = s.wi;
+      pdf = s.pdf;
+      throughput *= s.f * (cos_wi / s.pdf);
+    }
 
     // Russian roulette: survive with probability q and divide by q, which keeps the estimator
-    // unbiased; q follows the throughput so that dim paths end early.
+    // unbiased. q is the throughput itself, so surviving paths keep a weight of about one: a cap
+    // below one (0.95, say) would let the weights of long paths in a lossless medium grow as
+    // 0.95^−k, a heavy tail that hides energy in rare paths at any practical sample count.
     if (bounces >= kRouletteStartBounce) {
-      float q = std::min(0.95f, maxComponent(throughput));
-      if (random.next() >= q) break;
-      throughput /= q;
+      const float q = std::min(1.0f, maxComponent(throughput));
+      if (q < 1.0f) {
+        if (random.next() >= q) break;
+        throughput /= q;
+      }
     }
+    // Only a closed, lossless scene keeps a path going forever; end it there.
+    if (bounces >= kMaxBounceGuard) break;
     origin = vertex.spawnOrigin();
-    direction = s.wi;
-    previous_bsdf_pdf = s.pdf;
-    previous_normal = normal;
+    direction = wi;
+    previous_pdf = pdf;
+    previous_in_medium = vertex.inMedium();
+    previous_normal = vertex.normal;
   }
   return out;
 }

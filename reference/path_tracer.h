@@ -1,21 +1,28 @@
 // The reference integrator: unidirectional path tracing with next-event estimation to every light
-// type, combined with BSDF sampling by multiple importance sampling (power heuristic), and
-// unbiased Russian roulette. It can restrict itself to a path class (DESIGN.md, "Path classes").
+// type, combined with BSDF (or phase-function) sampling by multiple importance sampling (power
+// heuristic), unbiased Russian roulette, and a heterogeneous medium integrated by delta tracking
+// (free paths) and ratio tracking (shadow rays). It can restrict itself to a path class
+// (DESIGN.md, "Path classes").
 #pragma once
 
 #include "reference/area_light_sampler.h"
 #include "reference/embree_scene.h"
+#include "reference/medium_tracking.h"
 #include "reference/rng.h"
+#include "reference/scattering_vertex.h"
 #include "reference/triangle_table.h"
+#include "scene/medium.h"
 #include "scene/scene.h"
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 namespace gib::ref {
 
-// Bounces are the scattering vertices between the light and the eye: an emitter seen directly
-// has 0 bounces, direct lighting (L D E) has 1. Only paths with min ≤ bounces ≤ max contribute.
+// Bounces are the scattering vertices between the light and the eye, on surfaces or in the
+// medium: an emitter seen directly has 0 bounces, direct lighting (L D E) and single scattering
+// have 1. Only paths with min ≤ bounces ≤ max contribute.
 struct PathClass {
   static constexpr int kUnlimited = std::numeric_limits<int>::max();
   int min_bounces = 0;
@@ -26,7 +33,7 @@ struct PathClass {
 
 struct RadianceSample {
   scene::Rgb total{0.0f};
-  scene::Rgb direct{0.0f};  // the part carried by paths of at most one bounce (L E and L D E)
+  scene::Rgb direct{0.0f};  // the part carried by paths of at most one bounce
   std::uint32_t rays = 0;   // intersection and shadow rays traced
 };
 
@@ -34,6 +41,10 @@ class PathTracer {
  public:
   // Russian roulette starts after this many bounces: early vertices carry most of the image.
   static constexpr int kRouletteStartBounce = 3;
+  // A path that keeps its full throughput (albedo 1 everywhere, no way out) would never end: it
+  // is cut here. Any scene that absorbs or lets light escape loses all but a vanishing share of
+  // its paths long before (a lossless cloud of optical depth 10 scatters ~100 times).
+  static constexpr int kMaxBounceGuard = 100000;
 
   PathTracer(const scene::Scene& scene, PathClass path_class);
 
@@ -42,20 +53,29 @@ class PathTracer {
 
   const EmbreeScene& embree() const { return embree_; }
   const PathClass& pathClass() const { return path_class_; }
+  // Null when the scene has no medium.
+  const MediumTracker* medium() const { return medium_ ? &*medium_ : nullptr; }
 
  private:
-  struct Vertex;
   // Next-event estimation at a scattering vertex: one sample of the area lights, one of the sky,
   // and every spot and directional light (delta lights, so no MIS).
-  scene::Rgb estimateDirect(const Vertex& v, SampleStream& random, std::uint32_t& rays) const;
-
-  bool segmentIsClear(const glm::vec3& origin, const glm::vec3& target) const;
+  scene::Rgb estimateDirect(const ScatteringVertex& v, SampleStream& random,
+                            std::uint32_t& rays) const;
+  // Fraction of light arriving at `target` from `origin`: 0 when a surface blocks the segment,
+  // else the medium's transmittance (1 without a medium).
+  float segmentTransmittance(const glm::vec3& origin, const glm::vec3& target,
+                             SampleStream& random, std::uint32_t& rays) const;
+  // The same for a ray to infinity.
+  float rayTransmittance(const glm::vec3& origin, const glm::vec3& direction, SampleStream& random,
+                         std::uint32_t& rays) const;
 
   const scene::Scene& scene_;
   PathClass path_class_;
   EmbreeScene embree_;
   TriangleTable triangles_;
   AreaLightSampler area_lights_;
+  scene::DensityGrid density_;
+  std::optional<MediumTracker> medium_;
   bool has_sky_;
 };
 

@@ -39,11 +39,15 @@ DensityGrid::DensityGrid(const std::vector<MediumParticle>& particles) : particl
 
   // Bucket the particles by the cells their bounding cubes overlap (counting pass, then fill).
   const std::size_t cells = std::size_t(resolution_[0]) * resolution_[1] * resolution_[2];
+  // A particle is listed in every cell its bounding cube touches, widened by a hair so that a
+  // point on a cell boundary finds it whichever cell a lookup rounds to: then σt never exceeds
+  // the majorant of the cell a tracker is in.
   auto cellRange = [&](const MediumParticle& p, glm::ivec3& lo, glm::ivec3& hi) {
     for (int a = 0; a < 3; ++a) {
-      lo[a] = std::clamp(int(std::floor((p.centre[a] - p.radius - lower_[a]) / cell_size_[a])), 0,
+      const float reach = p.radius + 1e-4f * cell_size_[a];
+      lo[a] = std::clamp(int(std::floor((p.centre[a] - reach - lower_[a]) / cell_size_[a])), 0,
                          resolution_[a] - 1);
-      hi[a] = std::clamp(int(std::floor((p.centre[a] + p.radius - lower_[a]) / cell_size_[a])), 0,
+      hi[a] = std::clamp(int(std::floor((p.centre[a] + reach - lower_[a]) / cell_size_[a])), 0,
                          resolution_[a] - 1);
     }
   };

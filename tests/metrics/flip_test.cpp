@@ -263,6 +263,18 @@ TEST(FlipInputs, NonFinitePixelsCountAsBlack) {
   EXPECT_EQ(hdr.mean, computeHdrFlip(black, a).mean);
 }
 
+TEST(FlipHdr, ExtremeRadianceStaysFinite) {
+  // 1e30 squared overflows a float; a reference of denormal radiance asks for about 2^150.
+  const image::Image a = makeHdrScene(48, 32);
+  image::Image huge = a;
+  huge.pixel(5, 5)[1] = 1e30f;
+  image::Image tiny(48, 32, 3, 1e-42f);
+  for (const FlipResult& r : {computeHdrFlip(a, huge), computeHdrFlip(tiny, a)}) {
+    EXPECT_TRUE(std::isfinite(r.mean));
+    for (float e : r.error_map.data()) ASSERT_TRUE(e >= 0.0f && e <= 1.0f);
+  }
+}
+
 TEST(FlipHdr, ExposureRangeOfAKnownImage) {
   // Grey pixels (R = G = B, so luminance = value) 1, 2, 4 and 8: maximum 8, upper median 4.
   image::Image grey(2, 2, 3);

@@ -1,0 +1,73 @@
+#include "reference/medium_tracking.h"
+
+#include <cmath>
+#include <limits>
+
+namespace gib::ref {
+
+namespace {
+
+// Optical thickness to the next tentative collision: an exponential variate of mean 1.
+float sampleOpticalThickness(SampleStream& random) { return -std::log1p(-random.next()); }
+
+}  // namespace
+
+float MediumTracker::sampleCollision(const glm::vec3& origin, const glm::vec3& direction,
+                                     float t_max, SampleStream& random) const {
+  float collision = std::numeric_limits<float>::infinity();
+  float remaining = sampleOpticalThickness(random);
+  walkMajorants(origin, direction, t_max, [&](float t0, float t1, float majorant) {
+    if (majorant <= 0) return true;
+    float t = t0;
+    for (;;) {
+      // The exponential is memoryless, so the thickness left over at a segment's end carries
+      // into the next segment with its own majorant.
+      const float thickness = majorant * (t1 - t);
+      if (remaining >= thickness) {
+        remaining -= thickness;
+        return true;
+      }
+      t += remaining / majorant;
+      // A tentative collision is real with probability σt/majorant, else null: go on.
+      if (random.next() * majorant < grid_.density(origin + t * direction)) {
+        collision = t;
+        return false;
+      }
+      remaining = sampleOpticalThickness(random);
+    }
+  });
+  return collision;
+}
+
+float MediumTracker::transmittance(const glm::vec3& origin, const glm::vec3& direction,
+                                   float t_max, SampleStream& random) const {
+  // Below this estimate, Russian roulette decides whether the walk goes on.
+  constexpr float kRouletteThreshold = 0.1f;
+  float estimate = 1.0f;
+  float remaining = sampleOpticalThickness(random);
+  walkMajorants(origin, direction, t_max, [&](float t0, float t1, float majorant) {
+    if (majorant <= 0) return true;
+    float t = t0;
+    for (;;) {
+      const float thickness = majorant * (t1 - t);
+      if (remaining >= thickness) {
+        remaining -= thickness;
+        return true;
+      }
+      t += remaining / majorant;
+      estimate *= 1.0f - grid_.density(origin + t * direction) / majorant;
+      if (estimate < kRouletteThreshold) {
+        const float survive = estimate / kRouletteThreshold;
+        if (random.next() >= survive) {
+          estimate = 0.0f;
+          return false;
+        }
+        estimate = kRouletteThreshold;  // = estimate / survive
+      }
+      remaining = sampleOpticalThickness(random);
+    }
+  });
+  return estimate;
+}
+
+}  // namespace gib::ref
