@@ -19,9 +19,9 @@ namespace gib::metrics {
 
 // How large a pixel looks: the filters' widths are set in degrees of visual angle.
 struct FlipViewingConditions {
-  // The papers' default: a 0.7 m wide 3840-pixel monitor seen from 0.7 m, rounded to 67 as the
-  // HPG 2020 paper states it. The published tool computes it unrounded, 67.0206
-  // (flipPixelsPerDegree(0.7, 0.7, 3840)); the difference moves means by about 1e-5.
+  // The papers' default: a 0.7 m wide 3840-pixel monitor seen from 0.7 m, rounded to 67, the figure
+  // the HPG 2020 paper quotes. The published tool computes it unrounded, 67.0206
+  // (flipPixelsPerDegree(0.7, 0.7, 3840)); the difference moves means by about 2e-5.
   double pixels_per_degree = 67.0;
 };
 
@@ -71,9 +71,9 @@ struct HdrFlipOptions {
 // start is the exposure that tone-maps the brightest luminance of the reference to 0.85, stop the
 // one that tone-maps its median luminance to 0.85; the count is max(2, ⌈stop − start⌉).
 // Luminance is Y = 0.2126 R + 0.7152 G + 0.0722 B. The median is the upper median (element n/2
-// of the sorted luminances), as the published tool takes it. Where the median (or the maximum)
-// is not positive, the smallest positive luminance stands in for it (an image mostly black);
-// with no positive luminance at all the range is [0, 0].
+// of the sorted luminances), as the published tool takes it. Where the median is not positive
+// (an image mostly black), the smallest positive luminance stands in for it; with no positive
+// luminance at all the range is [0, 0] with two exposures. Non-finite pixels count as black.
 FlipExposureRange computeFlipExposureRange(const image::Image& reference);
 
 // HDR-FLIP: the per-pixel maximum of LDR-FLIP over the exposures of the range, each exposure
