@@ -44,8 +44,10 @@ bool parseDouble(const std::string& text, double& value) {
 std::string canonicalValue(const ParameterSpec& spec, const std::string& text,
                            std::string_view owner) {
   auto bad = [&](const std::string& why) {
-    return InputError(fmt::format("{} parameter '{}' = '{}' {}; give a {} in {}", owner,
-                                  spec.name, text, why, typeName(spec.type), rangeText(spec)));
+    const char* article = spec.type == ParameterType::kInteger ? "an" : "a";
+    return InputError(fmt::format("{} parameter '{}' = '{}' {}; give {} {} in {}", owner,
+                                  spec.name, text, why, article, typeName(spec.type),
+                                  rangeText(spec)));
   };
   switch (spec.type) {
     case ParameterType::kChoice:

@@ -32,6 +32,11 @@ const std::vector<BuiltinScene>& registry() {
         "detail 1, ~85 000 at detail 5) after Szirmay-Kalos et al. Fig. 8.12",
         chamberParameters()},
        &makeChamber},
+      {{"cloud",
+        "procedural cumulus of 1024 particles (albedo 0.9, g 0, two directional lights and a "
+        "sky) after Szirmay-Kalos et al. Fig. 9.21",
+        cloudParameters()},
+       &makeCloud},
   };
   return scenes;
 }

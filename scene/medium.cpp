@@ -11,10 +11,11 @@ namespace gib::scene {
 
 namespace {
 
-// About this many particles overlap a cell on average: few enough that a density lookup is cheap,
-// many enough that the grid stays small.
-constexpr double kParticlesPerCell = 4.0;
-constexpr int kMaxResolution = 64;
+// Cells a particle's bounding cube spans per axis, on average. Small cells give tight majorants
+// (few null collisions) and short particle lists; on the default cloud, 5 renders 6× faster than
+// cells the size of a particle, and smaller cells gain little more.
+constexpr double kCellsPerParticleSide = 5.0;
+constexpr int kMaxResolution = 128;
 
 }  // namespace
 
@@ -28,10 +29,10 @@ DensityGrid::DensityGrid(const std::vector<MediumParticle>& particles) : particl
     upper_ = glm::max(upper_, p.centre + glm::vec3(p.radius));
     volume_sum += 8.0 * double(p.radius) * p.radius * p.radius;  // bounding cube of the particle
   }
-  // Pick the cell size so that a cell holds ~kParticlesPerCell particle bounding cubes.
+  // Cells of 1/kCellsPerParticleSide of the mean particle cube's side.
   const glm::vec3 extent = glm::max(upper_ - lower_, glm::vec3(1e-6f));
-  const double cell_volume = volume_sum / double(particles_.size()) / kParticlesPerCell;
-  const double side = std::cbrt(std::max(cell_volume, 1e-30));
+  const double mean_cube_side = std::cbrt(volume_sum / double(particles_.size()));
+  const double side = std::max(mean_cube_side / kCellsPerParticleSide, 1e-12);
   for (int a = 0; a < 3; ++a) {
     resolution_[a] = std::clamp(int(std::ceil(extent[a] / side)), 1, kMaxResolution);
     cell_size_[a] = extent[a] / float(resolution_[a]);
@@ -51,6 +52,16 @@ DensityGrid::DensityGrid(const std::vector<MediumParticle>& particles) : particl
                          resolution_[a] - 1);
     }
   };
+  // A particle's density inside a cell is at most τ·(1 − d/r), d the distance from its centre
+  // to the cell's box: a far tighter bound than τ for particles that only graze the cell, so
+  // trackers take fewer null collisions.
+  auto densityBound = [&](const MediumParticle& p, int x, int y, int z) {
+    const glm::vec3 box_lower = lower_ + glm::vec3(x, y, z) * cell_size_;
+    const glm::vec3 nearest = glm::clamp(p.centre, box_lower, box_lower + cell_size_);
+    const float d = glm::length(p.centre - nearest);
+    // Rounded up by a hair, like the bucketing, so lookups near a boundary stay under it.
+    return p.density * std::min(1.0f, std::max(0.0f, 1.0f - d / p.radius) + 1e-4f);
+  };
   std::vector<std::uint32_t> counts(cells, 0);
   majorants_.assign(cells, 0.0f);
   for (const MediumParticle& p : particles_) {
@@ -60,7 +71,7 @@ DensityGrid::DensityGrid(const std::vector<MediumParticle>& particles) : particl
       for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) {
           ++counts[cellIndex(x, y, z)];
-          majorants_[cellIndex(x, y, z)] += p.density;
+          majorants_[cellIndex(x, y, z)] += densityBound(p, x, y, z);
         }
   }
   cell_start_.assign(cells + 1, 0);

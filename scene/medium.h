@@ -16,7 +16,7 @@ namespace gib::scene {
 
 // Builds the lookup structure of a medium: a uniform grid over the particles' bounds, each cell
 // listing the particles that overlap it and holding a majorant (an upper bound of σt inside the
-// cell: the sum of the τ of those particles). Grid resolution aims at a few particles per cell.
+// cell: the sum over those particles of their largest density within the cell). Grid resolution aims at a few particles per cell.
 class DensityGrid {
  public:
   explicit DensityGrid(const std::vector<MediumParticle>& particles);
