@@ -50,8 +50,8 @@ void writeMaps(const fs::path& dir, const metrics::MetricReport& report,
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir))
-    throw InputError(fmt::format("cannot create the maps directory '{}'; choose another --maps",
-                                 dir.string()));
+    throw InputError(
+        fmt::format("cannot create the maps directory '{}'; choose another --maps", dir.string()));
   for (const auto& [name, map] : report.maps) {
     image::Metadata m = metadata;
     m["gibench/metric"] = name;
@@ -65,8 +65,8 @@ image::Image loadRgb(const std::string& path, const char* role) {
   image::ExrFile file = image::readExr(path);
   const image::Image* rgb = file.findLayer("");
   if (!rgb)
-    throw InputError(fmt::format("{} image '{}' has no R, G, B channels; give an RGB EXR", role,
-                                 path));
+    throw InputError(
+        fmt::format("{} image '{}' has no R, G, B channels; give an RGB EXR", role, path));
   return *rgb;
 }
 
@@ -130,9 +130,11 @@ CommandRunner addCompareCommand(CLI::App& app) {
   CLI::App* compare = app.add_subcommand("compare", "Measure a test image against a reference");
   compare->add_option("reference", o->reference, "reference EXR")->required();
   compare->add_option("test", o->test, "test EXR")->required();
-  compare->add_option("--metrics", o->metrics, "all, or a comma-separated list (gibench list metrics)")
+  compare
+      ->add_option("--metrics", o->metrics, "all, or a comma-separated list (gibench list metrics)")
       ->capture_default_str();
-  compare->add_option("--maps", o->maps, "write per-pixel error maps (EXR and false-colour PNG) here");
+  compare->add_option("--maps", o->maps,
+                      "write per-pixel error maps (EXR and false-colour PNG) here");
   compare->add_flag("--json", o->json, "print one JSON object instead of a table");
   compare->add_option("--ppd", o->pixels_per_degree, "FLIP viewing condition: pixels per degree")
       ->capture_default_str();

@@ -34,8 +34,7 @@ CommandRunner addListCommand(CLI::App& app) {
         fmt::print("{:<10} {}\n", info.name, info.description);
       return 0;
     }
-    throw InputError(
-        fmt::format("cannot list '{}'; choose scenes, techniques or metrics", *what));
+    throw InputError(fmt::format("cannot list '{}'; choose scenes, techniques or metrics", *what));
   };
 }
 

@@ -15,10 +15,14 @@ namespace {
 
 const char* typeName(ParameterType type) {
   switch (type) {
-    case ParameterType::kInteger: return "integer";
-    case ParameterType::kNumber: return "number";
-    case ParameterType::kVector3: return "x,y,z";
-    case ParameterType::kChoice: return "choice";
+    case ParameterType::kInteger:
+      return "integer";
+    case ParameterType::kNumber:
+      return "number";
+    case ParameterType::kVector3:
+      return "x,y,z";
+    case ParameterType::kChoice:
+      return "choice";
   }
   return "?";
 }
@@ -45,9 +49,8 @@ std::string canonicalValue(const ParameterSpec& spec, const std::string& text,
                            std::string_view owner) {
   auto bad = [&](const std::string& why) {
     const char* article = spec.type == ParameterType::kInteger ? "an" : "a";
-    return InputError(fmt::format("{} parameter '{}' = '{}' {}; give {} {} in {}", owner,
-                                  spec.name, text, why, article, typeName(spec.type),
-                                  rangeText(spec)));
+    return InputError(fmt::format("{} parameter '{}' = '{}' {}; give {} {} in {}", owner, spec.name,
+                                  text, why, article, typeName(spec.type), rangeText(spec)));
   };
   switch (spec.type) {
     case ParameterType::kChoice:
@@ -89,17 +92,47 @@ std::string canonicalValue(const ParameterSpec& spec, const std::string& text,
 
 }  // namespace
 
+ParameterSpec numericParameter(std::string name, ParameterType type, std::string default_value,
+                               double min, double max, std::string unit, std::string doc) {
+  ParameterSpec spec;
+  spec.name = std::move(name);
+  spec.type = type;
+  spec.default_value = std::move(default_value);
+  spec.min = min;
+  spec.max = max;
+  spec.unit = std::move(unit);
+  spec.doc = std::move(doc);
+  return spec;
+}
+
+ParameterSpec choiceParameter(std::string name, std::string default_value,
+                              std::vector<std::string> choices, std::string doc) {
+  ParameterSpec spec;
+  spec.name = std::move(name);
+  spec.type = ParameterType::kChoice;
+  spec.default_value = std::move(default_value);
+  spec.choices = std::move(choices);
+  spec.doc = std::move(doc);
+  return spec;
+}
+
 const std::string& ParameterValues::find(std::string_view name) const {
   for (const auto& [key, value] : values_)
     if (key == name) return value;
   throw std::logic_error(fmt::format("parameter '{}' is not declared", name));
 }
 
-const std::string& ParameterValues::text(std::string_view name) const { return find(name); }
+const std::string& ParameterValues::text(std::string_view name) const {
+  return find(name);
+}
 
-double ParameterValues::number(std::string_view name) const { return std::stod(find(name)); }
+double ParameterValues::number(std::string_view name) const {
+  return std::stod(find(name));
+}
 
-int ParameterValues::integer(std::string_view name) const { return std::stoi(find(name)); }
+int ParameterValues::integer(std::string_view name) const {
+  return std::stoi(find(name));
+}
 
 std::vector<double> ParameterValues::vector3(std::string_view name) const {
   const std::string& text = find(name);
@@ -132,8 +165,9 @@ ParameterValues parseParameters(const ParameterTable& table,
     if (!spec) {
       std::string known;
       for (const ParameterSpec& s : table) known += (known.empty() ? "" : ", ") + s.name;
-      throw InputError(fmt::format("{} has no parameter '{}'; {}", owner, key,
-                                   known.empty() ? "it takes none" : "its parameters are " + known));
+      throw InputError(
+          fmt::format("{} has no parameter '{}'; {}", owner, key,
+                      known.empty() ? "it takes none" : "its parameters are " + known));
     }
     if (given.count(key))
       throw InputError(fmt::format("{} parameter '{}' is given twice; give it once", owner, key));

@@ -26,6 +26,13 @@ struct ParameterSpec {
 
 using ParameterTable = std::vector<ParameterSpec>;
 
+// A numeric (integer, number or vector) parameter in one call.
+ParameterSpec numericParameter(std::string name, ParameterType type, std::string default_value,
+                               double min, double max, std::string unit, std::string doc);
+// A choice parameter.
+ParameterSpec choiceParameter(std::string name, std::string default_value,
+                              std::vector<std::string> choices, std::string doc);
+
 // Validated values, every declared parameter present (defaults filled in).
 class ParameterValues {
  public:
@@ -38,8 +45,8 @@ class ParameterValues {
   std::vector<std::pair<std::string, std::string>> canonical() const;
 
  private:
-  friend ParameterValues parseParameters(const ParameterTable&,
-                                         const std::vector<std::string>&, std::string_view);
+  friend ParameterValues parseParameters(const ParameterTable&, const std::vector<std::string>&,
+                                         std::string_view);
   const std::string& find(std::string_view name) const;
   std::vector<std::pair<std::string, std::string>> values_;
 };

@@ -37,9 +37,8 @@ MetricValue perPixelMean(const image::Image& reference, const image::Image& test
         out = kNaN;
         continue;
       }
-      double e = (channel_error(r[0], t[0]) + channel_error(r[1], t[1]) +
-                  channel_error(r[2], t[2])) /
-                 3.0;
+      double e =
+          (channel_error(r[0], t[0]) + channel_error(r[1], t[1]) + channel_error(r[2], t[2])) / 3.0;
       out = float(e);
       sum += e;
       ++count;
@@ -84,7 +83,8 @@ MetricValue computeRelMse(const image::Image& reference, const image::Image& tes
     if (std::isfinite(v)) values.push_back(v);
   if (values.empty()) return result;
   std::sort(values.begin(), values.end());
-  const auto kept = values.size() - std::size_t(std::floor(kRelMseRejectedFraction * values.size()));
+  const auto kept =
+      values.size() - std::size_t(std::floor(kRelMseRejectedFraction * values.size()));
   double sum = 0;
   for (std::size_t i = 0; i < kept; ++i) sum += values[i];
   result.value = sum / double(kept);
@@ -109,8 +109,8 @@ MetricValue computePsnr(const image::Image& reference, const image::Image& test)
     return d * d;
   });
   MetricValue result;
-  result.value = mse.value > 0 ? 10.0 * std::log10(1.0 / mse.value)
-                               : std::numeric_limits<double>::infinity();
+  result.value =
+      mse.value > 0 ? 10.0 * std::log10(1.0 / mse.value) : std::numeric_limits<double>::infinity();
   return result;
 }
 

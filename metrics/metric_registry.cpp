@@ -12,8 +12,8 @@ namespace gib::metrics {
 
 namespace {
 
-using Evaluator = std::function<void(const image::Image&, const image::Image&,
-                                     const MetricOptions&, MetricReport&)>;
+using Evaluator = std::function<void(const image::Image&, const image::Image&, const MetricOptions&,
+                                     MetricReport&)>;
 
 struct MetricEntry {
   MetricInfo info;
@@ -21,10 +21,10 @@ struct MetricEntry {
 };
 
 // A metric with one figure and a map under its own name.
-Evaluator scalar(const char* name,
-                 std::function<MetricValue(const image::Image&, const image::Image&,
-                                           const MetricOptions&)>
-                     compute) {
+Evaluator scalar(
+    const char* name,
+    std::function<MetricValue(const image::Image&, const image::Image&, const MetricOptions&)>
+        compute) {
   return [name, compute](const image::Image& r, const image::Image& t, const MetricOptions& o,
                          MetricReport& report) {
     MetricValue v = compute(r, t, o);
@@ -51,13 +51,15 @@ const std::vector<MetricEntry>& entries() {
        scalar("rmse", [](auto& r, auto& t, auto&) { return computeRmse(r, t); })},
       {{"mae", "mean absolute error of linear RGB"},
        scalar("mae", [](auto& r, auto& t, auto&) { return computeMae(r, t); })},
-      {{"relmse", "relative MSE (x-r)^2/(r^2+eps), eps = 0.01; --reject-outliers drops the top 0.1%"},
+      {{"relmse",
+        "relative MSE (x-r)^2/(r^2+eps), eps = 0.01; --reject-outliers drops the top 0.1%"},
        scalar("relmse",
               [](auto& r, auto& t, auto& o) {
                 return computeRelMse(r, t, o.relative_epsilon, o.reject_outliers);
               })},
       {{"mape", "mean absolute percentage error |x-r|/(|r|+eps)"},
-       scalar("mape", [](auto& r, auto& t, auto& o) { return computeMape(r, t, o.relative_epsilon); })},
+       scalar("mape",
+              [](auto& r, auto& t, auto& o) { return computeMape(r, t, o.relative_epsilon); })},
       {{"smape", "symmetric MAPE 2|x-r|/(|x|+|r|+eps)"},
        scalar("smape",
               [](auto& r, auto& t, auto& o) { return computeSmape(r, t, o.relative_epsilon); })},
@@ -103,8 +105,8 @@ std::vector<std::string> parseMetricList(std::string_view list) {
     if (!known) {
       std::string all;
       for (const MetricEntry& e : entries()) all += (all.empty() ? "" : ", ") + e.info.name;
-      throw InputError(fmt::format("unknown metric '{}'; choose 'all' or a comma-separated list of: {}",
-                                   name, all));
+      throw InputError(fmt::format(
+          "unknown metric '{}'; choose 'all' or a comma-separated list of: {}", name, all));
     }
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     start = end + 1;

@@ -93,8 +93,8 @@ MetricValue computeSsim(const image::Image& reference, const image::Image& test)
       const double s = (2 * double(mx[k]) * my[k] + kC1) * (2 * sxy + kC2) /
                        ((double(mx[k]) * mx[k] + double(my[k]) * my[k] + kC1) * (sx + sy + kC2));
       result.map.pixel(i, j)[0] = float(s);
-      const bool inside = i >= kRadius && j >= kRadius && i < width - kRadius &&
-                          j < height - kRadius;
+      const bool inside =
+          i >= kRadius && j >= kRadius && i < width - kRadius && j < height - kRadius;
       if (inside) {
         sum += s;
         ++count;

@@ -34,6 +34,12 @@ class MediumTracker {
   const scene::DensityGrid& grid() const { return grid_; }
 
  private:
+  // Tentative collisions of the majorant's exponential flight along the segment, in order:
+  // on_collision(t, σt/majorant) returns false to stop.
+  template <typename OnTentativeCollision>
+  void trackTentativeCollisions(const glm::vec3& origin, const glm::vec3& direction, float t_max,
+                                SampleStream& random, OnTentativeCollision&& on_collision) const;
+
   const scene::DensityGrid& grid_;
 };
 

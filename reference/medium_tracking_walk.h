@@ -8,8 +8,8 @@
 namespace gib::ref {
 
 template <typename Visit>
-void MediumTracker::walkMajorants(const glm::vec3& origin, const glm::vec3& direction,
-                                  float t_max, Visit&& visit) const {
+void MediumTracker::walkMajorants(const glm::vec3& origin, const glm::vec3& direction, float t_max,
+                                  Visit&& visit) const {
   if (grid_.empty()) return;
   constexpr float kInf = std::numeric_limits<float>::infinity();
   // Clip the segment to the grid's box (slab test).
@@ -40,7 +40,8 @@ void MediumTracker::walkMajorants(const glm::vec3& origin, const glm::vec3& dire
     if (direction[a] > 0) {
       step[a] = 1;
       t_delta[a] = cell_size[a] / direction[a];
-      t_next[a] = t_enter + (lower[a] + float(cell[a] + 1) * cell_size[a] - start[a]) / direction[a];
+      t_next[a] =
+          t_enter + (lower[a] + float(cell[a] + 1) * cell_size[a] - start[a]) / direction[a];
     } else if (direction[a] < 0) {
       step[a] = -1;
       t_delta[a] = -cell_size[a] / direction[a];
@@ -54,8 +55,8 @@ void MediumTracker::walkMajorants(const glm::vec3& origin, const glm::vec3& dire
 
   float t = t_enter;
   for (;;) {
-    const int axis = (t_next[0] < t_next[1]) ? (t_next[0] < t_next[2] ? 0 : 2)
-                                             : (t_next[1] < t_next[2] ? 1 : 2);
+    const int axis =
+        (t_next[0] < t_next[1]) ? (t_next[0] < t_next[2] ? 0 : 2) : (t_next[1] < t_next[2] ? 1 : 2);
     const float t_end = std::min(t_next[axis], t_exit);
     if (t_end > t && !visit(t, t_end, grid_.majorant(cell[0], cell[1], cell[2]))) return;
     if (t_end >= t_exit) return;

@@ -21,7 +21,9 @@ float powerHeuristic(float pdf_a, float pdf_b) {
   return a + b > 0 ? a / (a + b) : 0.0f;
 }
 
-float maxComponent(const Rgb& c) { return std::max(c.r, std::max(c.g, c.b)); }
+float maxComponent(const Rgb& c) {
+  return std::max(c.r, std::max(c.g, c.b));
+}
 
 }  // namespace
 
@@ -79,8 +81,8 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
       if (transmittance > 0) {
         const float pdf_light = s.pdf_area * dist2 / cos_light;
         const float weight = powerHeuristic(pdf_light, v.pdf(wi));
-        result += f * scene_.materials[light.material].emission *
-                  (transmittance * weight / pdf_light);
+        result +=
+            f * scene_.materials[light.material].emission * (transmittance * weight / pdf_light);
       }
     }
   }
@@ -126,8 +128,7 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
 }
 
 RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
-                                    const glm::vec3& camera_direction,
-                                    SampleStream& random) const {
+                                    const glm::vec3& camera_direction, SampleStream& random) const {
   RadianceSample out;
   auto record = [&](int bounces, const Rgb& contribution) {
     if (!path_class_.contains(bounces)) return;
@@ -167,7 +168,7 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
       if (has_sky_) {
         const float weight =
             bounces > 0 ? powerHeuristic(previous_pdf, skySamplingPdf(previous_in_medium,
-                                                                       previous_normal, direction))
+                                                                      previous_normal, direction))
                         : 1.0f;
         record(bounces, throughput * scene_.sky_radiance * weight);
       }

@@ -63,8 +63,8 @@ class PathTracer {
                             std::uint32_t& rays) const;
   // Fraction of light arriving at `target` from `origin`: 0 when a surface blocks the segment,
   // else the medium's transmittance (1 without a medium).
-  float segmentTransmittance(const glm::vec3& origin, const glm::vec3& target,
-                             SampleStream& random, std::uint32_t& rays) const;
+  float segmentTransmittance(const glm::vec3& origin, const glm::vec3& target, SampleStream& random,
+                             std::uint32_t& rays) const;
   // The same for a ray to infinity.
   float rayTransmittance(const glm::vec3& origin, const glm::vec3& direction, SampleStream& random,
                          std::uint32_t& rays) const;

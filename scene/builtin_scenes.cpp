@@ -65,9 +65,10 @@ Scene loadScene(std::string_view name_or_path, const std::vector<std::string>& p
   std::filesystem::path path(name_or_path);
   if (path.extension() == ".toml") {
     if (!parameters.empty())
-      throw InputError(fmt::format("scene file '{}' takes no --scene-set parameters; edit the file "
-                                   "instead",
-                                   path.string()));
+      throw InputError(
+          fmt::format("scene file '{}' takes no --scene-set parameters; edit the file "
+                      "instead",
+                      path.string()));
     return loadSceneFile(path);
   }
   std::string names;

@@ -203,28 +203,18 @@ glm::vec3 toVec3(const std::vector<double>& v) {
 }  // namespace
 
 ParameterTable chamberParameters() {
-  auto declare = [](std::string name, ParameterType type, std::string default_value, double min,
-                    double max, std::string unit, std::string doc) {
-    ParameterSpec spec;
-    spec.name = std::move(name);
-    spec.type = type;
-    spec.default_value = std::move(default_value);
-    spec.min = min;
-    spec.max = max;
-    spec.unit = std::move(unit);
-    spec.doc = std::move(doc);
-    return spec;
-  };
   return {
-      declare("detail", ParameterType::kInteger, "1", 1, 5, "",
-              "tessellation level d: about 3400·d² triangles (1: 3384, like the book's chamber; 5: "
-              "85240)"),
-      declare("light_position", ParameterType::kVector3, "0,6.6,3.5", -100, 100, "m",
-              "spot light position (the hall spans x in [-4, 4], y in [0, 7.2], z in [0, 12])"),
-      declare("light_target", ParameterType::kVector3, "0.4,0,7.5", -100, 100, "m",
-              "point the spot light aims at (on the floor, y = 0, by default)"),
-      declare("light_intensity", ParameterType::kNumber, "500", 0, 1e6, "W/sr",
-              "spot light intensity on its axis (white)"),
+      numericParameter(
+          "detail", ParameterType::kInteger, "1", 1, 5, "",
+          "tessellation level d: about 3400·d² triangles (1: 3384, like the book's chamber; 5: "
+          "85240)"),
+      numericParameter(
+          "light_position", ParameterType::kVector3, "0,6.6,3.5", -100, 100, "m",
+          "spot light position (the hall spans x in [-4, 4], y in [0, 7.2], z in [0, 12])"),
+      numericParameter("light_target", ParameterType::kVector3, "0.4,0,7.5", -100, 100, "m",
+                       "point the spot light aims at (on the floor, y = 0, by default)"),
+      numericParameter("light_intensity", ParameterType::kNumber, "500", 0, 1e6, "W/sr",
+                       "spot light intensity on its axis (white)"),
   };
 }
 

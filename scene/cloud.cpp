@@ -154,31 +154,20 @@ MediumParticle makeParticle(const std::vector<Lobe>& lobes, std::uint64_t seed, 
   return particle;
 }
 
-ParameterSpec makeSpec(std::string name, ParameterType type, std::string default_value, double min,
-                       double max, std::string doc) {
-  ParameterSpec spec;
-  spec.name = std::move(name);
-  spec.type = type;
-  spec.default_value = std::move(default_value);
-  spec.min = min;
-  spec.max = max;
-  spec.doc = std::move(doc);  // all four are plain numbers: no unit
-  return spec;
-}
-
 }  // namespace
 
 ParameterTable cloudParameters() {
   return {
-      makeSpec("particles", ParameterType::kInteger, "1024", 16, 16384,
-               "number of medium particles; radii scale so that the cloud's optical depth stays "
-               "about the same (the book's cloud has 1024)"),
-      makeSpec("seed", ParameterType::kInteger, "1", 0, 2147483647,
-               "seed of the lobe layout and of the particle placement"),
-      makeSpec("albedo", ParameterType::kNumber, "0.9", 0, 1,
-               "single-scattering albedo σs/σt of the medium, the same in R, G and B"),
-      makeSpec("g", ParameterType::kNumber, "0", -0.95, 0.95,
-               "Henyey–Greenstein asymmetry of the phase function (0: isotropic)"),
+      numericParameter(
+          "particles", ParameterType::kInteger, "1024", 16, 16384, "",
+          "number of medium particles; radii scale so that the cloud's optical depth stays "
+          "about the same (the book's cloud has 1024)"),
+      numericParameter("seed", ParameterType::kInteger, "1", 0, 2147483647, "",
+                       "seed of the lobe layout and of the particle placement"),
+      numericParameter("albedo", ParameterType::kNumber, "0.9", 0, 1, "",
+                       "single-scattering albedo σs/σt of the medium, the same in R, G and B"),
+      numericParameter("g", ParameterType::kNumber, "0", -0.95, 0.95, "",
+                       "Henyey–Greenstein asymmetry of the phase function (0: isotropic)"),
   };
 }
 

@@ -16,7 +16,8 @@ namespace gib::scene {
 
 // Builds the lookup structure of a medium: a uniform grid over the particles' bounds, each cell
 // listing the particles that overlap it and holding a majorant (an upper bound of σt inside the
-// cell: the sum over those particles of their largest density within the cell). Grid resolution aims at a few particles per cell.
+// cell: the sum over those particles of their largest density within the cell). Grid resolution
+// aims at a few particles per cell.
 class DensityGrid {
  public:
   explicit DensityGrid(const std::vector<MediumParticle>& particles);
@@ -41,7 +42,7 @@ class DensityGrid {
   std::vector<MediumParticle> particles_;
   glm::vec3 lower_{0.0f}, upper_{0.0f}, cell_size_{1.0f};
   std::array<int, 3> resolution_{1, 1, 1};
-  std::vector<std::uint32_t> cell_start_;     // per cell, offset into cell_particles_ (+1 end)
+  std::vector<std::uint32_t> cell_start_;  // per cell, offset into cell_particles_ (+1 end)
   std::vector<std::uint32_t> cell_particles_;
   std::vector<float> majorants_;
   float max_majorant_ = 0;

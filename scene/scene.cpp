@@ -103,7 +103,8 @@ void validateScene(const Scene& scene) {
   validateRgb(scene.sky_radiance, "sky radiance");
   validateRgb(scene.medium.albedo, "medium albedo");
   for (int c = 0; c < 3; ++c)
-    require(scene.medium.albedo[c] <= 1.0f, "medium albedo must be <= 1 (a medium cannot gain energy)");
+    require(scene.medium.albedo[c] <= 1.0f,
+            "medium albedo must be <= 1 (a medium cannot gain energy)");
   require(std::isfinite(scene.medium.g) && scene.medium.g > -1 && scene.medium.g < 1,
           fmt::format("medium g must be in (-1, 1), got {}", scene.medium.g));
   for (const MediumParticle& p : scene.medium.particles)

@@ -53,15 +53,39 @@ metrics::MetricValue smape(const image::Image& r, const image::Image& t) {
   return metrics::computeSmape(r, t);
 }
 
-BENCHMARK(BM_Metric<metrics::computeMse>)->Name("BM_Mse_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Metric<metrics::computeRmse>)->Name("BM_Rmse_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Metric<metrics::computeMae>)->Name("BM_Mae_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Metric<relMse>)->Name("BM_RelMse_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Metric<relMseRejectingOutliers>)->Name("BM_RelMseRejectOutliers_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Metric<metrics::computeMse>)
+    ->Name("BM_Mse_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Metric<metrics::computeRmse>)
+    ->Name("BM_Rmse_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Metric<metrics::computeMae>)
+    ->Name("BM_Mae_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Metric<relMse>)
+    ->Name("BM_RelMse_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Metric<relMseRejectingOutliers>)
+    ->Name("BM_RelMseRejectOutliers_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_Metric<mape>)->Name("BM_Mape_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Metric<smape>)->Name("BM_Smape_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Metric<metrics::computePsnr>)->Name("BM_Psnr_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Metric<metrics::computeSsim>)->Name("BM_Ssim_1024x768")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Metric<smape>)
+    ->Name("BM_Smape_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Metric<metrics::computePsnr>)
+    ->Name("BM_Psnr_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Metric<metrics::computeSsim>)
+    ->Name("BM_Ssim_1024x768")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_ZTest_1024x768(benchmark::State& state) {
   const Pair& p = pair();

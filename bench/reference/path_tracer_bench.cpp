@@ -35,12 +35,22 @@ void BM_Reference512(benchmark::State& state, const char* scene_name) {
     benchmark::DoNotOptimize(r.mean.data().data());
   }
   state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
-  state.counters["samples/s"] = benchmark::Counter(
-      double(state.iterations()) * kSize * kSize * double(state.range(0)), benchmark::Counter::kIsRate);
+  state.counters["samples/s"] =
+      benchmark::Counter(double(state.iterations()) * kSize * kSize * double(state.range(0)),
+                         benchmark::Counter::kIsRate);
 }
-BENCHMARK_CAPTURE(BM_Reference512, cornell, "cornell")->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_Reference512, chamber, "chamber")->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_Reference512, cloud, "cloud")->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Reference512, cornell, "cornell")
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_Reference512, chamber, "chamber")
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_Reference512, cloud, "cloud")
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 struct Ray {
   glm::vec3 origin, direction;

@@ -27,9 +27,8 @@ TEST(CompareCommand, PrintsOneJsonObjectWithEveryMetric) {
   TempDir dir;
   writeImage(dir / "ref.exr", 48, 32, 0.5f);
   writeImage(dir / "test.exr", 48, 32, 0.55f, 3);
-  CommandResult r =
-      runGibench({"compare", (dir / "ref.exr").string(), (dir / "test.exr").string(), "--json"},
-                 dir.path());
+  CommandResult r = runGibench(
+      {"compare", (dir / "ref.exr").string(), (dir / "test.exr").string(), "--json"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["nonfinite"], 1);

@@ -1,5 +1,5 @@
-#include "common/input_error.h"
 #include "common/parameters.h"
+#include "common/input_error.h"
 
 #include <gtest/gtest.h>
 

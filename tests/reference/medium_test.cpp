@@ -7,8 +7,8 @@
 #include "reference/progressive_renderer.h"
 #include "support/chi_square.h"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <cmath>
 
@@ -70,7 +70,9 @@ TEST_P(HenyeyGreensteinChiSquare, MatchesItsDensity) {
   const float g = GetParam();
   const glm::vec3 incoming = glm::normalize(glm::vec3(0.3f, -0.4f, 0.8f));
   double p = test::chiSquarePValue(
-      [&](SampleStream& r) { return sampleHenyeyGreenstein(incoming, g, {r.next(), r.next()}); },
+      [&](SampleStream& r) {
+        return sampleHenyeyGreenstein(incoming, g, {r.next(), r.next()});
+      },
       [&](const glm::vec3& w) { return double(henyeyGreenstein(glm::dot(incoming, w), g)); });
   EXPECT_GT(p, metrics::sidakSignificance(0.01, 5)) << "g = " << g;
 }

@@ -2,10 +2,10 @@
 // (support/chi_square.h), rejecting at a family-wise significance of 1% (Šidák-corrected over
 // the tests in this file).
 #include "reference/sampling.h"
-#include "support/chi_square.h"
 #include "metrics/distributions.h"
 #include "reference/bsdf.h"
 #include "reference/rng.h"
+#include "support/chi_square.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
