@@ -2,6 +2,9 @@
 
 #include "metrics/tone_map.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,30 +22,40 @@ bool pixelIsFinite(const float* p) {
 }
 
 // The per-pixel map of `channel_error` averaged over R, G, B, and the mean over finite pixels.
-// Sums run in double and in pixel order, so the result does not depend on anything but the data.
+// Rows run in parallel; each row's sum (in double) is kept and the rows are added in order, so
+// the result is the same whatever the number of threads.
 template <typename ChannelError>
 MetricValue perPixelMean(const image::Image& reference, const image::Image& test,
                          ChannelError channel_error) {
   requireComparable(reference, test);
   MetricValue result;
   result.map = image::Image(reference.width(), reference.height(), 1);
+  std::vector<double> row_sums(std::size_t(reference.height()), 0.0);
+  std::vector<std::size_t> row_counts(std::size_t(reference.height()), 0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, reference.height()), [&](auto rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < reference.width(); ++x) {
+        const float* r = reference.pixel(x, y);
+        const float* t = test.pixel(x, y);
+        float& out = result.map.pixel(x, y)[0];
+        if (!pixelIsFinite(r) || !pixelIsFinite(t)) {
+          out = kNaN;
+          continue;
+        }
+        double e =
+            (channel_error(r[0], t[0]) + channel_error(r[1], t[1]) + channel_error(r[2], t[2])) /
+            3.0;
+        out = float(e);
+        row_sums[std::size_t(y)] += e;
+        ++row_counts[std::size_t(y)];
+      }
+  });
   double sum = 0;
   std::size_t count = 0;
-  for (int y = 0; y < reference.height(); ++y)
-    for (int x = 0; x < reference.width(); ++x) {
-      const float* r = reference.pixel(x, y);
-      const float* t = test.pixel(x, y);
-      float& out = result.map.pixel(x, y)[0];
-      if (!pixelIsFinite(r) || !pixelIsFinite(t)) {
-        out = kNaN;
-        continue;
-      }
-      double e =
-          (channel_error(r[0], t[0]) + channel_error(r[1], t[1]) + channel_error(r[2], t[2])) / 3.0;
-      out = float(e);
-      sum += e;
-      ++count;
-    }
+  for (std::size_t y = 0; y < row_sums.size(); ++y) {
+    sum += row_sums[y];
+    count += row_counts[y];
+  }
   result.value = count > 0 ? sum / double(count) : kNaN;
   return result;
 }
@@ -77,14 +90,17 @@ MetricValue computeRelMse(const image::Image& reference, const image::Image& tes
     return (t - r) * (t - r) / (r * r + epsilon);
   });
   if (!reject_outliers) return result;
-  // Drop the largest 0.1% of the per-pixel values (fireflies), then average the rest.
+  // Drop the largest 0.1% of the per-pixel values (fireflies), then average the rest: a
+  // selection (linear time) puts the kept values first, in an order that depends on the data
+  // only, so the sum is deterministic.
   std::vector<float> values;
   for (float v : result.map.data())
     if (std::isfinite(v)) values.push_back(v);
   if (values.empty()) return result;
-  std::sort(values.begin(), values.end());
   const auto kept =
-      values.size() - std::size_t(std::floor(kRelMseRejectedFraction * values.size()));
+      values.size() - std::size_t(std::floor(kRelMseRejectedFraction * double(values.size())));
+  if (kept < values.size())
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(kept), values.end());
   double sum = 0;
   for (std::size_t i = 0; i < kept; ++i) sum += values[i];
   result.value = sum / double(kept);
