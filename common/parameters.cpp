@@ -82,7 +82,8 @@ std::string canonicalValue(const ParameterSpec& spec, const std::string& text,
         double v = 0;
         if (!parseDouble(p, v)) throw bad("has a component that is not a number");
         if (v < spec.min || v > spec.max) throw bad("has a component out of range");
-        canonical += (canonical.empty() ? "" : ",") + fmt::format("{}", v);
+        if (!canonical.empty()) canonical += ',';
+        canonical += fmt::format("{}", v);
       }
       return canonical;
     }
