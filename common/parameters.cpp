@@ -1,6 +1,7 @@
 #include "common/parameters.h"
 
 #include "common/input_error.h"
+#include "common/join.h"
 
 #include <fmt/format.h>
 
@@ -29,9 +30,7 @@ const char* typeName(ParameterType type) {
 
 std::string rangeText(const ParameterSpec& spec) {
   if (spec.type == ParameterType::kChoice) {
-    std::string all;
-    for (const std::string& c : spec.choices) all += (all.empty() ? "" : "|") + c;
-    return all;
+    return joinNames(spec.choices, "|", [](const std::string& c) { return c; });
   }
   return fmt::format("[{}, {}]{}{}", spec.min, spec.max, spec.unit.empty() ? "" : " ", spec.unit);
 }
@@ -164,8 +163,8 @@ ParameterValues parseParameters(const ParameterTable& table,
     for (const ParameterSpec& s : table)
       if (s.name == key) spec = &s;
     if (!spec) {
-      std::string known;
-      for (const ParameterSpec& s : table) known += (known.empty() ? "" : ", ") + s.name;
+      const std::string known =
+          joinNames(table, ", ", [](const ParameterSpec& s) { return s.name; });
       throw InputError(
           fmt::format("{} has no parameter '{}'; {}", owner, key,
                       known.empty() ? "it takes none" : "its parameters are " + known));

@@ -1,6 +1,7 @@
 #include "metrics/metric_registry.h"
 
 #include "common/input_error.h"
+#include "common/join.h"
 #include "metrics/ssim.h"
 
 #include <fmt/format.h>
@@ -103,8 +104,8 @@ std::vector<std::string> parseMetricList(std::string_view list) {
     bool known = false;
     for (const MetricEntry& e : entries()) known = known || e.info.name == name;
     if (!known) {
-      std::string all;
-      for (const MetricEntry& e : entries()) all += (all.empty() ? "" : ", ") + e.info.name;
+      const std::string all =
+          joinNames(entries(), ", ", [](const MetricEntry& e) { return e.info.name; });
       throw InputError(fmt::format(
           "unknown metric '{}'; choose 'all' or a comma-separated list of: {}", name, all));
     }

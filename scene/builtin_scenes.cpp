@@ -1,6 +1,7 @@
 #include "scene/builtin_scenes.h"
 
 #include "common/input_error.h"
+#include "common/join.h"
 #include "scene/scene_file.h"
 
 #include <fmt/format.h>
@@ -71,8 +72,8 @@ Scene loadScene(std::string_view name_or_path, const std::vector<std::string>& p
                       path.string()));
     return loadSceneFile(path);
   }
-  std::string names;
-  for (const BuiltinScene& s : registry()) names += (names.empty() ? "" : ", ") + s.info.name;
+  const std::string names =
+      joinNames(registry(), ", ", [](const BuiltinScene& s) { return s.info.name; });
   throw InputError(fmt::format(
       "unknown scene '{}'; use a built-in scene ({}; see `gibench list scenes`) or the path of a "
       ".toml scene file",

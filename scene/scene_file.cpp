@@ -1,6 +1,7 @@
 #include "scene/scene_file.h"
 
 #include "common/input_error.h"
+#include "common/join.h"
 
 #include <fmt/format.h>
 #include <tiny_obj_loader.h>
@@ -49,9 +50,7 @@ class ErrorReporter {
 };
 
 std::string joinKeys(const std::vector<std::string>& keys) {
-  std::string joined;
-  for (const std::string& key : keys) joined += (joined.empty() ? "" : ", ") + key;
-  return joined;
+  return joinNames(keys, ", ", [](const std::string& key) { return key; });
 }
 
 // The value of an integer or floating-point node; NaN for anything else.
