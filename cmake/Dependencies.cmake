@@ -11,6 +11,9 @@ find_package(nlohmann_json REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(tomlplusplus REQUIRED)
 find_package(tinyobjloader REQUIRED)
+# Headless OpenGL through GLVND: libOpenGL (no GLX) and libEGL.
+set(OpenGL_GL_PREFERENCE GLVND)
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 
 # OpenImageIO's exported target names /usr/include/opencv4, which Debian does not install unless

@@ -1,0 +1,152 @@
+#include "realtime/gl/shader_library.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <regex>
+
+namespace gib::rt::gl {
+
+std::string_view glslFile(std::string_view path) {
+  for (const EmbeddedFile& file : embeddedGlslFiles())
+    if (file.path == path) return file.text;
+  throw ShaderError(
+      fmt::format("no embedded GLSL file '{}' (is it under realtime/ and named *.glsl?)", path));
+}
+
+namespace {
+
+constexpr int kMaxIncludeDepth = 16;
+
+void expandInto(std::string_view path, std::string_view (*lookup)(std::string_view),
+                ExpandedSource& out, std::vector<std::string>& stack) {
+  if (stack.size() > kMaxIncludeDepth || std::find(stack.begin(), stack.end(), path) != stack.end())
+    throw ShaderError(
+        fmt::format("{}: #include cycle or nesting deeper than {}", path, kMaxIncludeDepth));
+  auto found = std::find(out.files.begin(), out.files.end(), path);
+  if (found != out.files.end() && !stack.empty()) return;  // included once, like #pragma once
+  const std::size_t number = out.files.size();
+  out.files.emplace_back(path);
+  stack.emplace_back(path);
+  const std::string_view text = lookup(path);
+  out.text += fmt::format("#line 1 {}\n", number);
+  int line = 0;
+  for (std::size_t start = 0; start < text.size();) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view row = text.substr(start, end - start);
+    ++line;
+    start = end + 1;
+    const std::size_t first = row.find_first_not_of(" \t");
+    if (first != std::string_view::npos && row.substr(first).starts_with("#include")) {
+      const std::size_t open = row.find('"'), close = row.rfind('"');
+      if (open == std::string_view::npos || close <= open)
+        throw ShaderError(fmt::format("{}:{}: #include needs a quoted path", path, line));
+      expandInto(row.substr(open + 1, close - open - 1), lookup, out, stack);
+      out.text += fmt::format("#line {} {}\n", line + 1, number);
+      continue;
+    }
+    if (first != std::string_view::npos && row.substr(first).starts_with("#version"))
+      throw ShaderError(fmt::format(
+          "{}:{}: leave out #version; every stage is compiled as 450 core", path, line));
+    out.text.append(row);
+    out.text += '\n';
+  }
+  stack.pop_back();
+}
+
+std::string stageName(GLenum type) {
+  switch (type) {
+    case GL_VERTEX_SHADER:
+      return "vertex";
+    case GL_FRAGMENT_SHADER:
+      return "fragment";
+    case GL_GEOMETRY_SHADER:
+      return "geometry";
+    case GL_COMPUTE_SHADER:
+      return "compute";
+  }
+  return "shader";
+}
+
+}  // namespace
+
+ExpandedSource expandIncludes(std::string_view path, std::string_view defines,
+                              std::string_view (*lookup)(std::string_view)) {
+  ExpandedSource out;
+  out.text = "#version 450 core\n";
+  out.text += defines;
+  if (!defines.empty() && defines.back() != '\n') out.text += '\n';
+  std::vector<std::string> stack;
+  expandInto(path, lookup, out, stack);
+  return out;
+}
+
+std::string translateInfoLog(std::string_view log, const std::vector<std::string>& files) {
+  // Mesa: "0:12(3): error"; NVIDIA: "0(12) : error".
+  static const std::regex location(R"((^|\n)(\d+)(?::(\d+)\((\d+)\)|\((\d+)\)))");
+  std::string out;
+  std::string text(log);
+  auto begin = std::sregex_iterator(text.begin(), text.end(), location);
+  std::size_t copied = 0;
+  for (auto it = begin; it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    const std::size_t number = std::stoul(m[2].str());
+    const std::string line = m[3].matched ? m[3].str() : m[5].str();
+    out.append(text, copied, std::size_t(m.position(0)) - copied);
+    out += m[1].str();
+    out += fmt::format("realtime/{}:{}", number < files.size() ? files[number] : "?", line);
+    copied = std::size_t(m.position(0) + m.length(0));
+  }
+  out.append(text, copied);
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\0')) out.pop_back();
+  return out;
+}
+
+Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view defines) {
+  Program program(glCreateProgram());
+  std::vector<GLuint> shaders;
+  std::vector<std::string> names;
+  auto cleanup = [&] {
+    for (GLuint s : shaders) glDeleteShader(s);
+  };
+  for (const ShaderStage& stage : stages) {
+    const ExpandedSource source = expandIncludes(stage.path, defines);
+    const GLuint shader = glCreateShader(stage.type);
+    shaders.push_back(shader);
+    names.push_back(stage.path);
+    const char* text = source.text.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      GLint length = 0;
+      glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+      std::string log(std::size_t(std::max(length, 1)), '\0');
+      glGetShaderInfoLog(shader, length, nullptr, log.data());
+      cleanup();
+      throw ShaderError(fmt::format("{} shader realtime/{} does not compile:\n{}",
+                                    stageName(stage.type), stage.path,
+                                    translateInfoLog(log, source.files)));
+    }
+    glAttachShader(program.id(), shader);
+  }
+  glLinkProgram(program.id());
+  cleanup();
+  GLint ok = 0;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+    std::string joined;
+    for (const std::string& n : names) joined += (joined.empty() ? "realtime/" : ", realtime/") + n;
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+    throw ShaderError(fmt::format("program ({}) does not link:\n{}", joined, log));
+  }
+  return program;
+}
+
+}  // namespace gib::rt::gl
