@@ -12,6 +12,7 @@
 #include "reference/scattering_vertex.h"
 #include "reference/triangle_table.h"
 #include "scene/medium.h"
+#include "scene/path_class.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -20,16 +21,7 @@
 
 namespace gib::ref {
 
-// Bounces are the scattering vertices between the light and the eye, on surfaces or in the
-// medium: an emitter seen directly has 0 bounces, direct lighting (L D E) and single scattering
-// have 1. Only paths with min ≤ bounces ≤ max contribute.
-struct PathClass {
-  static constexpr int kUnlimited = std::numeric_limits<int>::max();
-  int min_bounces = 0;
-  int max_bounces = kUnlimited;
-
-  bool contains(int bounces) const { return bounces >= min_bounces && bounces <= max_bounces; }
-};
+using PathClass = scene::PathClass;
 
 struct RadianceSample {
   scene::Rgb total{0.0f};

@@ -1,0 +1,72 @@
+// The scene model on the GPU, uploaded once: flat-shaded triangles (positions, geometric normals,
+// material index per vertex), the materials as a shader storage buffer, the camera as a uniform
+// buffer, and the light lists on the CPU side for techniques that place shadow maps or samples.
+//
+// GLSL side (realtime/scene/scene.glsl, included by techniques):
+//   layout(std430, binding = kMaterialBinding) buffer Materials { Material materials[]; };
+//   layout(std140, binding = kCameraBinding) uniform Camera { ... };
+//   vertex attributes: 0 position (vec3), 1 normal (vec3, unit, (b−a)×(c−a)), 2 material (uint).
+#pragma once
+
+#include "realtime/gl/objects.h"
+#include "scene/scene.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <vector>
+
+namespace gib::rt {
+
+inline constexpr GLuint kMaterialBinding = 0;  // shader storage buffer binding
+inline constexpr GLuint kCameraBinding = 0;    // uniform buffer binding
+
+// The GL camera of a pinhole camera::Camera: the same rays as scene::cameraRayDirection through
+// every pixel centre. Near and far planes enclose the scene's bounds.
+struct CameraTransform {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  glm::vec3 position{0.0f};
+  float near_plane = 0, far_plane = 0;
+};
+CameraTransform cameraTransform(const scene::Camera& camera, int width, int height,
+                                const glm::vec3& bounds_min, const glm::vec3& bounds_max);
+
+// An emissive triangle, in world space, for area-light sampling.
+struct EmitterTriangle {
+  glm::vec3 a, b, c;
+  glm::vec3 normal;  // unit, front side (the side it emits to)
+  float area;
+  scene::Rgb emission;  // radiance
+};
+
+class GpuScene {
+ public:
+  // Uploads geometry and materials and sets the camera for a width × height image.
+  GpuScene(const scene::Scene& scene, int width, int height);
+
+  const scene::Scene& scene() const { return *scene_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  glm::vec3 boundsMin() const { return bounds_min_; }
+  glm::vec3 boundsMax() const { return bounds_max_; }
+  const CameraTransform& camera() const { return camera_; }
+  const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
+  std::size_t vertexCount() const { return vertex_count_; }
+
+  // Binds the material buffer and the camera block to their bindings.
+  void bindSceneBuffers() const;
+  // Draws every triangle with the scene's vertex attributes (the caller has bound a program).
+  void draw() const;
+
+ private:
+  const scene::Scene* scene_;
+  int width_, height_;
+  glm::vec3 bounds_min_, bounds_max_;
+  CameraTransform camera_;
+  std::vector<EmitterTriangle> emitters_;
+  std::size_t vertex_count_ = 0;
+  gl::Buffer vertices_, materials_, camera_block_;
+  gl::VertexArray vertex_array_;
+};
+
+}  // namespace gib::rt

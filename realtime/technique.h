@@ -1,0 +1,64 @@
+// The interface every real-time technique implements, and the catalogue that turns a name into
+// one (pbrt's habit: one place maps names to objects, so the command line, `gibench list` and the
+// suites agree on what exists and what it takes).
+#pragma once
+
+#include "common/parameters.h"
+#include "image/image.h"
+#include "scene/path_class.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gib::rt {
+
+class GpuScene;
+class RenderTarget;
+namespace gl {
+class PassProfiler;
+}
+
+// What a frame renders into and is timed by.
+struct Frame {
+  RenderTarget& target;  // linear float RGB(A) at the output resolution
+  gl::PassProfiler& profiler;
+};
+
+class Technique {
+ public:
+  virtual ~Technique() = default;
+
+  // Builds everything that depends on the scene and the output size (programs, shadow maps,
+  // volumes). Called once, after the scene has been uploaded; its time is reported separately.
+  virtual void prepare(const GpuScene& scene, int width, int height) = 0;
+  // Renders one frame of the current state into frame.target.
+  virtual void render(Frame& frame) = 0;
+
+  // Iterative techniques (radiosity, light propagation) refine a state: step() runs one
+  // iteration, iterations() counts those run, so the harness can draw error against iterations.
+  virtual bool iterative() const { return false; }
+  virtual void step(gl::PassProfiler& /*profiler*/) {}
+  virtual int iterations() const { return 0; }
+
+  // The light paths this technique models with its current parameters (DESIGN.md, path classes).
+  virtual scene::PathClass pathClass() const = 0;
+};
+
+struct TechniqueInfo {
+  std::string name;
+  std::string description;  // one line
+  std::string source;       // the document and section it implements
+  ParameterTable parameters;
+  std::function<std::unique_ptr<Technique>(const ParameterValues&)> create;
+};
+
+// Every technique, in catalogue order.
+const std::vector<TechniqueInfo>& techniqueCatalogue();
+
+// Throws gib::InputError naming the known techniques for an unknown name.
+const TechniqueInfo& findTechnique(std::string_view name);
+
+}  // namespace gib::rt
