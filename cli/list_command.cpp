@@ -1,6 +1,7 @@
 #include "cli/commands.h"
 #include "common/input_error.h"
 #include "metrics/metric_registry.h"
+#include "realtime/technique.h"
 #include "scene/builtin_scenes.h"
 
 #include <fmt/format.h>
@@ -27,6 +28,12 @@ CommandRunner addListCommand(CLI::App& app) {
       fmt::print("{:<10} {}\n", "reference",
                  "Embree path tracer (ground truth); options: --spp --seed --min-bounces "
                  "--max-bounces --checkpoints --threads");
+      for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) {
+        fmt::print("{:<10} {}\n", info.name, info.description);
+        fmt::print("{:<10}   source: {}\n", "", info.source);
+        for (const std::string& line : describeParameters(info.parameters))
+          fmt::print("{:<10}   --set {}\n", "", line);
+      }
       return 0;
     }
     if (*what == "metrics") {

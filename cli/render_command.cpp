@@ -1,87 +1,16 @@
 #include "cli/commands.h"
-#include "common/input_error.h"
-#include "image/exr_io.h"
-#include "reference/reference_output.h"
-#include "scene/builtin_scenes.h"
+#include "cli/render_options.h"
 
-#include <fmt/format.h>
-
-#include <filesystem>
 #include <memory>
-#include <optional>
 
 namespace gib::cli {
 
-namespace {
-
-struct RenderOptions {
-  std::string scene;
-  std::string technique = "reference";
-  std::optional<int> width;
-  std::optional<int> height;
-  int spp = 64;
-  std::uint64_t seed = 0;
-  int min_bounces = 0;
-  std::optional<int> max_bounces;
-  int threads = 0;
-  bool checkpoints = false;
-  std::vector<std::string> set;
-  std::vector<std::string> scene_set;
-  std::string out;
-};
-
-int runRender(const RenderOptions& o) {
-  if (o.technique != "reference")
-    throw InputError(
-        fmt::format("unknown technique '{}'; available: reference (see `gibench list techniques`)",
-                    o.technique));
-  if (!o.set.empty())
-    throw InputError(
-        fmt::format("technique 'reference' has no parameter '{}'; it takes --spp, "
-                    "--seed, --min-bounces, --max-bounces instead",
-                    o.set.front().substr(0, o.set.front().find('='))));
-  if (o.spp <= 0)
-    throw InputError(
-        fmt::format("--spp {} renders nothing; give at least 1 sample per pixel", o.spp));
-  const std::filesystem::path out(o.out);
-  ref::checkOutputPath(out);
-  const scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
-
-  ref::RenderSettings settings;
-  settings.width = o.width.value_or(scene.default_width);
-  settings.height = o.height.value_or(scene.default_height);
-  settings.spp = std::uint32_t(o.spp);
-  settings.seed = o.seed;
-  settings.path_class.min_bounces = o.min_bounces;
-  if (o.max_bounces) settings.path_class.max_bounces = *o.max_bounces;
-  settings.threads = o.threads;
-  settings.progress = true;
-  ref::validateRenderSettings(settings);
-
-  image::Metadata metadata = ref::referenceMetadata(scene, settings);
-  ref::CheckpointCallback on_checkpoint;
-  if (o.checkpoints)
-    on_checkpoint = [&](std::uint32_t spp, const image::Image& mean) {
-      image::Metadata m = metadata;
-      m["gibench/spp"] = std::to_string(spp);
-      image::writeExr(ref::checkpointPath(out, spp), {{"", mean}}, m);
-    };
-  ref::RenderResult result = ref::renderReference(scene, settings, on_checkpoint);
-  ref::addRunMetadata(metadata, result);
-  std::filesystem::path png = ref::writeReferenceOutputs(out, result, metadata);
-
-  fmt::print("scene      {} (hash {})\n", scene.name, metadata.at("gibench/scene_hash"));
-  fmt::print("rendered   {}x{} at {} spp in {:.2f} s ({:.2f} Mrays/s, peak memory {} MiB)\n",
-             settings.width, settings.height, settings.spp, result.seconds,
-             result.raysPerSecond() * 1e-6, metadata.at("gibench/peak_rss_mb"));
-  fmt::print("exr        {}\n", out.string());
-  fmt::print("png        {}\n", png.string());
-  if (o.checkpoints)
-    fmt::print("checkpoints {}\n", ref::checkpointPath(out, 1).parent_path().string());
-  return 0;
+std::vector<std::string> givenOptions(const CLI::App& app, const std::vector<std::string>& names) {
+  std::vector<std::string> given;
+  for (const std::string& name : names)
+    if (app.count(name) > 0) given.push_back(name);
+  return given;
 }
-
-}  // namespace
 
 CommandRunner addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
@@ -91,24 +20,65 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->required();
   render->add_option("--scene-set", o->scene_set,
                      "scene parameter key=value (repeatable; see `gibench list scenes`)");
-  render->add_option("--technique", o->technique, "reference (default) or a technique name");
+  render->add_option("--technique", o->technique,
+                     "reference (default) or a technique (see `gibench list techniques`)");
   render->add_option("--width", o->width, "image width in pixels (default: the scene's)");
   render->add_option("--height", o->height, "image height in pixels (default: the scene's)");
-  render->add_option("--spp", o->spp, "samples per pixel")->capture_default_str();
-  render->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  render->add_option("--out", o->out, "output EXR (a PNG is written beside it)")->required();
+
+  const char* kReference = "Reference path tracer";
+  render->add_option("--spp", o->spp, "samples per pixel")->capture_default_str()->group(kReference);
+  render->add_option("--seed", o->seed, "random seed")->capture_default_str()->group(kReference);
   render
       ->add_option("--min-bounces", o->min_bounces,
                    "only paths with at least this many bounces (0: emitters seen directly)")
-      ->capture_default_str();
-  render->add_option("--max-bounces", o->max_bounces,
-                     "only paths with at most this many bounces (default: unlimited)");
-  render->add_option("--threads", o->threads, "worker threads, 0 = all cores (same image)")
-      ->capture_default_str();
-  render->add_flag("--checkpoints", o->checkpoints,
-                   "also write the mean at 1, 2, 4, ... spp as <stem>.sppNNNN.exr");
-  render->add_option("--set", o->set, "technique parameter key=value (repeatable)");
-  render->add_option("--out", o->out, "output EXR (a PNG is written beside it)")->required();
-  return [o] { return runRender(*o); };
+      ->capture_default_str()
+      ->group(kReference);
+  render
+      ->add_option("--max-bounces", o->max_bounces,
+                   "only paths with at most this many bounces (default: unlimited)")
+      ->group(kReference);
+  render
+      ->add_option("--threads", o->threads, "worker threads, 0 = all cores (same image)")
+      ->capture_default_str()
+      ->group(kReference);
+  render
+      ->add_flag("--checkpoints", o->checkpoints,
+                 "also write the mean at 1, 2, 4, ... spp as <stem>.sppNNNN.exr")
+      ->group(kReference);
+
+  const char* kTechnique = "Real-time techniques";
+  render
+      ->add_option("--set", o->set,
+                   "technique parameter key=value (repeatable; see `gibench list techniques`)")
+      ->group(kTechnique);
+  render->add_option("--frames", o->frames, "measured frames")->capture_default_str()->group(kTechnique);
+  render->add_option("--warmup", o->warmup, "warm-up frames before measuring")
+      ->capture_default_str()
+      ->group(kTechnique);
+  render
+      ->add_option("--iterations", o->iterations,
+                   "iterative techniques: iterations before the frames")
+      ->capture_default_str()
+      ->group(kTechnique);
+  render
+      ->add_option("--clock", o->clock,
+                   "pass timing clock: gpu (timestamp queries), cpu (glFinish around each pass), "
+                   "auto (cpu on a software renderer)")
+      ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
+      ->capture_default_str()
+      ->group(kTechnique);
+  render
+      ->add_option("--gl-device", o->gl_device,
+                   "EGL device: auto, surfaceless or an index (default: $GIBENCH_GL_DEVICE or auto)")
+      ->group(kTechnique);
+  render->add_option("--timings-json", o->timings_json, "also write the pass timings as JSON here")
+      ->group(kTechnique);
+
+  return [o, render] {
+    return o->technique == "reference" ? renderReference(*o, *render)
+                                       : renderTechnique(*o, *render);
+  };
 }
 
 }  // namespace gib::cli

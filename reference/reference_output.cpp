@@ -1,12 +1,12 @@
 #include "reference/reference_output.h"
 
 #include "common/input_error.h"
-#include "gib/version.h"
 #include "image/display.h"
+#include "image/output_files.h"
 #include "reference/embree_scene.h"
+#include "scene/output_metadata.h"
 
 #include <sys/resource.h>
-#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
@@ -23,23 +23,10 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
       {"min_bounces", s.path_class.min_bounces},
       {"max_bounces", unlimited ? nlohmann::ordered_json("unlimited")
                                 : nlohmann::ordered_json(s.path_class.max_bounces)}};
-  image::Metadata m;
-  m["gibench/program"] = kProgramName;
-  m["gibench/version"] = kVersion;
-  m["gibench/technique"] = "reference";
-  m["gibench/parameters"] = parameters.dump();
-  m["gibench/scene"] = scene.name;
-  m["gibench/scene_hash"] = scene::hashScene(scene);
-  m["gibench/scene_provenance"] = scene.provenance;
-  nlohmann::ordered_json scene_parameters = nlohmann::ordered_json::object();
-  for (const auto& [key, value] : scene.parameters) scene_parameters[key] = value;
-  m["gibench/scene_parameters"] = scene_parameters.dump();
-  m["gibench/width"] = std::to_string(s.width);
-  m["gibench/height"] = std::to_string(s.height);
+  image::Metadata m = scene::outputMetadata(scene, "reference", parameters.dump(), s.width,
+                                             s.height, s.path_class);
   m["gibench/spp"] = std::to_string(s.spp);
   m["gibench/seed"] = std::to_string(s.seed);
-  m["gibench/min_bounces"] = std::to_string(s.path_class.min_bounces);
-  m["gibench/max_bounces"] = unlimited ? "unlimited" : std::to_string(s.path_class.max_bounces);
   m["gibench/embree_version"] = embreeVersion();
   m["gibench/layers"] =
       "RGB: mean radiance (linear Rec.709); variance: variance of the per-pixel mean; direct: "
@@ -79,17 +66,7 @@ void checkOutputPath(const fs::path& exr_path) {
   if (exr_path.extension() != ".exr")
     throw InputError(fmt::format("output '{}' must end in .exr; the PNG is written beside it",
                                  exr_path.string()));
-  fs::path dir = exr_path.parent_path().empty() ? fs::path(".") : exr_path.parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw InputError(
-        fmt::format("cannot write '{}': directory '{}' does not exist; create it first",
-                    exr_path.string(), dir.string()));
-  if (access(dir.c_str(), W_OK) != 0)
-    throw InputError(
-        fmt::format("cannot write '{}': directory '{}' is not writable; choose another "
-                    "--out",
-                    exr_path.string(), dir.string()));
+  image::checkOutputFile(exr_path);
 }
 
 }  // namespace gib::ref

@@ -1,0 +1,43 @@
+// The options of `gibench render`, shared by its two paths: the reference path tracer and the
+// real-time techniques. Each path rejects the options that belong to the other.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gib::cli {
+
+struct RenderOptions {
+  std::string scene;
+  std::string technique = "reference";
+  std::optional<int> width;
+  std::optional<int> height;
+  std::vector<std::string> scene_set;
+  std::string out;
+  // Reference only.
+  int spp = 64;
+  std::uint64_t seed = 0;
+  int min_bounces = 0;
+  std::optional<int> max_bounces;
+  int threads = 0;
+  bool checkpoints = false;
+  // Techniques only.
+  std::vector<std::string> set;
+  int frames = 8;
+  int warmup = 2;
+  int iterations = 1;
+  std::string clock = "auto";
+  std::string gl_device;
+  std::string timings_json;
+};
+
+// Options given on the command line (not defaulted) among `names`, e.g. {"--spp", "--seed"}.
+std::vector<std::string> givenOptions(const CLI::App& app, const std::vector<std::string>& names);
+
+int renderReference(const RenderOptions& options, const CLI::App& app);
+int renderTechnique(const RenderOptions& options, const CLI::App& app);
+
+}  // namespace gib::cli

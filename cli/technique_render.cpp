@@ -1,0 +1,90 @@
+// `gibench render --technique NAME`: a real-time technique on the headless GL context, with its
+// pass timings.
+#include "cli/render_options.h"
+#include "common/input_error.h"
+#include "common/join.h"
+#include "image/display.h"
+#include "image/exr_io.h"
+#include "image/output_files.h"
+#include "metrics/pass_timing_summary.h"
+#include "realtime/technique_runner.h"
+#include "reference/reference_output.h"
+#include "scene/builtin_scenes.h"
+#include "scene/output_metadata.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace gib::cli {
+
+namespace {
+
+std::string parametersJson(const ParameterValues& values) {
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : values.canonical()) json[key] = value;
+  return json.dump();
+}
+
+}  // namespace
+
+int renderTechnique(const RenderOptions& o, const CLI::App& app) {
+  const rt::TechniqueInfo& info = rt::findTechnique(o.technique);
+  const std::vector<std::string> foreign = givenOptions(
+      app, {"--spp", "--seed", "--min-bounces", "--max-bounces", "--threads", "--checkpoints"});
+  if (!foreign.empty())
+    throw InputError(fmt::format(
+        "{} applies to the reference path tracer; technique '{}' takes --set key=value (see "
+        "`gibench list techniques`)",
+        joinNames(foreign, ", ", [](const std::string& s) { return s; }), info.name));
+  const ParameterValues parameters =
+      parseParameters(info.parameters, o.set, fmt::format("technique '{}'", info.name));
+  const std::filesystem::path out(o.out);
+  ref::checkOutputPath(out);
+  if (!o.timings_json.empty()) image::checkOutputFile(o.timings_json, ".json");
+  const scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
+
+  rt::TechniqueRunSettings settings;
+  settings.width = o.width.value_or(scene.default_width);
+  settings.height = o.height.value_or(scene.default_height);
+  settings.frames = o.frames;
+  settings.warmup_frames = o.warmup;
+  settings.iterations = o.iterations;
+  if (o.clock != "auto") settings.precise = o.clock == "cpu";
+  settings.context.device = o.gl_device;
+  settings.context.debug = rt::gl::debugOutputByDefault();
+
+  const rt::TechniqueRunResult result = rt::runTechnique(scene, info, parameters, settings);
+  const std::vector<metrics::PassTimingRow> rows = metrics::summarizeProfile(result.profile);
+  const nlohmann::ordered_json timings = metrics::passTimingsJson(result.profile, rows);
+
+  image::Metadata metadata =
+      scene::outputMetadata(scene, info.name, parametersJson(parameters), settings.width,
+                            settings.height, result.path_class);
+  metadata.merge(rt::techniqueRunMetadata(result, settings));
+  metadata["gibench/frame_ms_median"] = fmt::format("{:.3f}", rows.front().reported.median);
+  metadata["gibench/peak_rss_mb"] = fmt::format("{:.1f}", ref::peakResidentMegabytes());
+  metadata["gibench/layers"] = "RGB: radiance of the last measured frame (linear Rec.709)";
+  image::writeExr(out, {{"", result.image}}, metadata);
+  const std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
+  image::writePng(png, result.image);
+  if (!o.timings_json.empty()) image::writeTextFile(o.timings_json, timings.dump(2) + "\n");
+
+  fmt::print("scene      {} (hash {})\n", scene.name, metadata.at("gibench/scene_hash"));
+  fmt::print("technique  {} {}\n", info.name,
+             joinNames(parameters.canonical(), " ",
+                       [](const auto& kv) { return kv.first + "=" + kv.second; }));
+  fmt::print("path class {}\n", metadata.at("gibench/path_class"));
+  fmt::print("gl         {} | {} | {} ({})\n", result.gl.vendor, result.gl.renderer,
+             result.gl.version, result.gl.device);
+  fmt::print("prepare    upload {:.1f} ms, prepare {:.1f} ms\n", result.upload_ms,
+             result.prepare_ms);
+  fmt::print("{}", metrics::formatPassTable(result.profile, rows));
+  fmt::print("exr        {}\n", out.string());
+  fmt::print("png        {}\n", png.string());
+  if (!o.timings_json.empty()) fmt::print("timings    {}\n", o.timings_json);
+  return 0;
+}
+
+}  // namespace gib::cli

@@ -1,0 +1,27 @@
+#include "realtime/technique.h"
+
+#include "common/input_error.h"
+#include "common/join.h"
+#include "realtime/techniques/direct/direct_technique.h"
+
+#include <fmt/format.h>
+
+namespace gib::rt {
+
+const std::vector<TechniqueInfo>& techniqueCatalogue() {
+  static const std::vector<TechniqueInfo> catalogue = {directTechniqueInfo()};
+  return catalogue;
+}
+
+const TechniqueInfo& findTechnique(std::string_view name) {
+  for (const TechniqueInfo& info : techniqueCatalogue())
+    if (info.name == name) return info;
+  const std::string names =
+      "reference, " + joinNames(techniqueCatalogue(), ", ", [](const TechniqueInfo& info) {
+        return info.name;
+      });
+  throw InputError(fmt::format("unknown technique '{}'; available: {} (see `gibench list techniques`)",
+                               name, names));
+}
+
+}  // namespace gib::rt

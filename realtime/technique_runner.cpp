@@ -1,0 +1,108 @@
+#include "realtime/technique_runner.h"
+
+#include "common/input_error.h"
+#include "realtime/gl/gl.h"
+#include "realtime/gl/pass_profiler.h"
+#include "realtime/gpu_scene.h"
+#include "realtime/render_target.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace gib::rt {
+
+namespace {
+
+// Wall-clock milliseconds of `work`, finished on the GPU.
+template <typename F>
+double timedMilliseconds(F&& work) {
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+void checkSettings(const TechniqueRunSettings& s) {
+  constexpr int kMaxSize = 16384;
+  if (s.width < 1 || s.height < 1 || s.width > kMaxSize || s.height > kMaxSize)
+    throw InputError(fmt::format("image size {}x{} is out of range; give 1 to {} per side",
+                                 s.width, s.height, kMaxSize));
+  if (s.frames < 1)
+    throw InputError(fmt::format("--frames {} measures nothing; give at least 1", s.frames));
+  if (s.warmup_frames < 0)
+    throw InputError(fmt::format("--warmup {} is negative; give 0 or more", s.warmup_frames));
+  if (s.iterations < 0)
+    throw InputError(fmt::format("--iterations {} is negative; give 0 or more", s.iterations));
+}
+
+}  // namespace
+
+TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& info,
+                                const ParameterValues& parameters,
+                                const TechniqueRunSettings& settings) {
+  checkSettings(settings);
+  std::unique_ptr<gl::Context> context = gl::Context::create(settings.context);
+  TechniqueRunResult result;
+  result.gl = context->identity();
+  {
+    std::unique_ptr<Technique> technique = info.create(parameters);
+    std::optional<GpuScene> gpu_scene;
+    result.upload_ms =
+        timedMilliseconds([&] { gpu_scene.emplace(scene, settings.width, settings.height); });
+    result.prepare_ms = timedMilliseconds(
+        [&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
+    const bool precise = settings.precise.value_or(result.gl.software);
+    gl::PassProfiler profiler(precise);
+    if (technique->iterative()) {
+      result.iterate_ms = timedMilliseconds([&] {
+        for (int i = 0; i < settings.iterations; ++i) technique->step(profiler);
+      });
+      result.iterations = technique->iterations();
+    }
+    RenderTarget target(settings.width, settings.height);
+    Frame frame{target, profiler};
+    for (int i = 0; i < settings.warmup_frames + settings.frames; ++i) {
+      profiler.beginFrame(i >= settings.warmup_frames);
+      target.clear(0, 0, 0);
+      technique->render(frame);
+      profiler.endFrame();
+    }
+    result.profile = profiler.finish();
+    result.image = target.read();
+    result.path_class = technique->pathClass();
+  }
+  if (context->debug()) {
+    const std::vector<std::string> errors = context->takeDebugErrors();
+    if (!errors.empty())
+      throw std::runtime_error(fmt::format("technique '{}' caused {} GL error(s); first: {}",
+                                           info.name, errors.size(), errors.front()));
+  }
+  return result;
+}
+
+std::map<std::string, std::string> techniqueRunMetadata(const TechniqueRunResult& r,
+                                                        const TechniqueRunSettings& s) {
+  std::map<std::string, std::string> m;
+  m["gibench/gl_device"] = r.gl.device;
+  m["gibench/gl_vendor"] = r.gl.vendor;
+  m["gibench/gl_renderer"] = r.gl.renderer;
+  m["gibench/gl_version"] = r.gl.version;
+  m["gibench/warmup_frames"] = std::to_string(s.warmup_frames);
+  m["gibench/frames"] = std::to_string(s.frames);
+  m["gibench/timing_clock"] = r.profile.reported_clock == "cpu"
+                                  ? "cpu (wall clock around glFinish per pass)"
+                                  : "gpu (timestamp queries)";
+  m["gibench/upload_ms"] = fmt::format("{:.3f}", r.upload_ms);
+  m["gibench/prepare_ms"] = fmt::format("{:.3f}", r.prepare_ms);
+  if (r.iterations > 0) {
+    m["gibench/iterations"] = std::to_string(r.iterations);
+    m["gibench/iterate_ms"] = fmt::format("{:.3f}", r.iterate_ms);
+  }
+  return m;
+}
+
+}  // namespace gib::rt

@@ -1,0 +1,22 @@
+// Paths with no bounce: emitters seen directly (one-sided, from their front) and the sky where
+// the primary ray leaves the scene.
+#include "scene/scene.glsl"
+
+layout(binding = 0) uniform sampler2D u_gbuffer_position;
+layout(binding = 1) uniform sampler2D u_gbuffer_normal;
+uniform vec3 u_camera_position;
+uniform vec3 u_sky_radiance;
+layout(location = 0) out vec4 o_radiance;
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 position = texelFetch(u_gbuffer_position, pixel, 0);
+  if (position.w < 0.0) {
+    o_radiance = vec4(u_sky_radiance, 1.0);
+    return;
+  }
+  vec4 normal_material = texelFetch(u_gbuffer_normal, pixel, 0);
+  bool front = dot(normal_material.xyz, u_camera_position - position.xyz) > 0.0;
+  vec3 emission = materials[uint(normal_material.w)].emission.rgb;
+  o_radiance = vec4(front ? emission : vec3(0.0), 1.0);
+}

@@ -1,0 +1,83 @@
+// Visibility of the current light from a world point through its shadow map (book §4.1.2–4.1.3):
+// a depth comparison (hard: nearest texel; PCF: the hardware's bilinearly filtered comparison,
+// the book's 2×2 PCF, over a (2r+1)² grid of taps one texel apart), or for a variance shadow map
+// the one-tailed Chebyshev bound σ²/(σ² + (z − E[Z])²), taken as 1 when z ≤ E[Z].
+#include "techniques/direct/light_space.glsl"
+
+#ifdef POINT_LIGHT
+#ifdef VARIANCE_SHADOW_MAP
+layout(binding = 2) uniform samplerCube u_shadow_map;
+#else
+layout(binding = 2) uniform samplerCubeShadow u_shadow_map;
+#endif
+#else
+#ifdef VARIANCE_SHADOW_MAP
+layout(binding = 2) uniform sampler2D u_shadow_map;
+#else
+layout(binding = 2) uniform sampler2DShadow u_shadow_map;
+#endif
+#endif
+
+uniform int u_shadow_map_size;
+uniform float u_ortho_extent;   // directional: world width of the map
+uniform float u_normal_offset;  // in texels, against acne
+uniform int u_pcf_radius;
+uniform float u_min_variance;
+
+// World size of one shadow-map texel at p: 90° cube faces span 2·distance along the major axis.
+float texelWorldSize(vec3 p) {
+#ifdef POINT_LIGHT
+  vec3 v = abs(p - u_light_position);
+  return 2.0 * max(v.x, max(v.y, v.z)) / float(u_shadow_map_size);
+#else
+  return u_ortho_extent / float(u_shadow_map_size);
+#endif
+}
+
+float chebyshevUpperBound(vec2 moments, float z) {
+  if (z <= moments.x) return 1.0;
+  float variance = max(moments.y - moments.x * moments.x, u_min_variance);
+  float d = z - moments.x;
+  return variance / (variance + d * d);
+}
+
+float shadowTap(vec3 p) {
+#ifdef POINT_LIGHT
+  vec3 v = p - u_light_position;
+#ifdef VARIANCE_SHADOW_MAP
+  return chebyshevUpperBound(texture(u_shadow_map, v).rg, lightDistance(p));
+#else
+  // The window depth the cube face selected by v stored for this point.
+  float major = max(abs(v.x), max(abs(v.y), abs(v.z)));
+  float ndc = (u_far + u_near) / (u_far - u_near) - 2.0 * u_far * u_near / ((u_far - u_near) * major);
+  return texture(u_shadow_map, vec4(v, ndc * 0.5 + 0.5));
+#endif
+#else
+  vec3 c = (u_light_view_projection * vec4(p, 1.0)).xyz * 0.5 + 0.5;
+#ifdef VARIANCE_SHADOW_MAP
+  return chebyshevUpperBound(texture(u_shadow_map, c.xy).rg, c.z);
+#else
+  return texture(u_shadow_map, c);
+#endif
+#endif
+}
+
+// `n` is the surface normal on the side facing the light.
+float lightVisibility(vec3 p, vec3 n) {
+  float texel = texelWorldSize(p);
+  vec3 q = p + n * (u_normal_offset * texel);
+  if (u_pcf_radius == 0) return shadowTap(q);
+#ifdef POINT_LIGHT
+  vec3 d = normalize(q - u_light_position);
+#else
+  vec3 d = u_light_axis;
+#endif
+  vec3 t = normalize(abs(d.x) > 0.9 ? cross(d, vec3(0.0, 1.0, 0.0)) : cross(d, vec3(1.0, 0.0, 0.0)));
+  vec3 b = cross(d, t);
+  float sum = 0.0;
+  for (int j = -u_pcf_radius; j <= u_pcf_radius; ++j)
+    for (int i = -u_pcf_radius; i <= u_pcf_radius; ++i)
+      sum += shadowTap(q + (float(i) * t + float(j) * b) * texel);
+  float side = float(2 * u_pcf_radius + 1);
+  return sum / (side * side);
+}

@@ -1,0 +1,143 @@
+// `direct` against the reference restricted to its path class (LE + LDE): each light type on a
+// plane, where shadow maps see no occluder and the result must match, and the Cornell box, where
+// the error must fall as light samples grow.
+#include "realtime/technique_runner.h"
+
+#include "metrics/image_metrics.h"
+#include "reference/progressive_renderer.h"
+#include "scene/builtin_scenes.h"
+#include "scene/mesh_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace gib::rt {
+namespace {
+
+// A 4 × 4 Lambertian floor (albedo 0.5) seen from above; lights are added by each test.
+scene::Scene floorScene() {
+  scene::Scene s;
+  s.name = "floor";
+  s.camera.position = {0.0f, 3.0f, 0.0f};
+  s.camera.look_at = {0.0f, 0.0f, 0.0f};
+  s.camera.up = {0.0f, 0.0f, -1.0f};
+  s.camera.vertical_fov_deg = 50.0f;
+  scene::Material floor;
+  floor.name = "floor";
+  floor.diffuse = scene::Rgb(0.5f);
+  s.materials.push_back(floor);
+  scene::Mesh mesh;
+  mesh.name = "floor";
+  scene::appendQuad(mesh, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
+  s.meshes.push_back(mesh);
+  return s;
+}
+
+TechniqueRunSettings smallRun(int width, int height) {
+  TechniqueRunSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.warmup_frames = 0;
+  settings.frames = 1;
+  settings.context.debug = true;  // any GL error fails the run
+  return settings;
+}
+
+image::Image renderDirect(const scene::Scene& scene, const std::vector<std::string>& set,
+                          int width, int height) {
+  const TechniqueInfo& info = findTechnique("direct");
+  const ParameterValues values = parseParameters(info.parameters, set, "technique 'direct'");
+  TechniqueRunResult result = runTechnique(scene, info, values, smallRun(width, height));
+  EXPECT_EQ(result.path_class, (scene::PathClass{0, 1}));
+  return result.image;
+}
+
+ref::RenderResult renderDirectReference(const scene::Scene& scene, int width, int height,
+                                        std::uint32_t spp) {
+  ref::RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.spp = spp;
+  settings.path_class = {0, 1};
+  return ref::renderReference(scene, settings);
+}
+
+double meanOf(const image::Image& image) {
+  double sum = 0;
+  for (float v : image.data()) sum += v;
+  return sum / double(image.data().size());
+}
+
+// Standard error of the reference image's mean, from its per-pixel variance of the mean.
+double meanStandardError(const ref::RenderResult& reference) {
+  double sum = 0;
+  for (float v : reference.variance.data()) sum += v;
+  const double n = double(reference.variance.data().size());
+  return std::sqrt(sum) / n;
+}
+
+// Within the class, a light that nothing occludes must be reproduced: the image mean agrees
+// with the reference's within 4 standard errors (99.99% for a normal mean) plus 0.5% for the
+// difference between GL's pixel-centre sample and the reference's pixel-area average; the
+// per-pixel relative error is small everywhere.
+void expectMatchesReference(const scene::Scene& scene, const std::vector<std::string>& set,
+                            double pixel_mape) {
+  const int w = 48, h = 48;
+  const image::Image test = renderDirect(scene, set, w, h);
+  const ref::RenderResult reference = renderDirectReference(scene, w, h, 64);
+  const double m_test = meanOf(test), m_ref = meanOf(reference.mean);
+  EXPECT_GT(m_ref, 0.0);
+  EXPECT_NEAR(m_test, m_ref, 4 * meanStandardError(reference) + 0.005 * m_ref)
+      << "test mean " << m_test << ", reference mean " << m_ref;
+  const double mape = metrics::computeMape(reference.mean, test).value;
+  EXPECT_LT(mape, pixel_mape);
+  EXPECT_EQ(image::countNonFinite(test), 0u);
+}
+
+TEST(DirectTechnique, DirectionalLightOnAPlaneMatchesTheReference) {
+  scene::Scene scene = floorScene();
+  scene.directional_lights.push_back({glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f)), {2, 1, 0.5f}});
+  for (const char* shadow : {"shadow=hard", "shadow=pcf", "shadow=vsm"})
+    expectMatchesReference(scene, {shadow}, 0.03);
+}
+
+TEST(DirectTechnique, SpotLightOnAPlaneMatchesTheReference) {
+  scene::Scene scene = floorScene();
+  scene::SpotLight spot;
+  spot.position = {0.5f, 1.5f, 0.0f};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  spot.intensity = {3, 3, 3};
+  spot.cone_angle_deg = 70.0f;
+  spot.falloff_exponent = 2.0f;
+  scene.spot_lights.push_back(spot);
+  // The cone's hard edge crosses pixels, where centre and area average differ.
+  expectMatchesReference(scene, {"shadow=pcf"}, 0.05);
+}
+
+TEST(DirectTechnique, SkyOnAPlaneMatchesTheReferenceWithManyDirections) {
+  scene::Scene scene = floorScene();
+  scene.sky_radiance = scene::Rgb(1.0f, 0.8f, 0.6f);
+  expectMatchesReference(scene, {"light_samples=256", "shadow_map_size=64"}, 0.03);
+}
+
+// Error of `direct` against the reference direct-only Cornell box as light samples grow: the
+// approximation converges (shadow maps stay, so the error levels off above zero).
+TEST(DirectTechnique, CornellErrorFallsAsLightSamplesGrow) {
+  const scene::Scene scene = scene::loadScene("cornell", {});
+  const int w = 64, h = 64;
+  const ref::RenderResult reference = renderDirectReference(scene, w, h, 256);
+  std::vector<double> errors;
+  for (int n : {1, 4, 16, 64}) {
+    const image::Image test =
+        renderDirect(scene, {"shadow=pcf", "light_samples=" + std::to_string(n)}, w, h);
+    errors.push_back(metrics::computeRelMse(reference.mean, test).value);
+    std::printf("light_samples=%d relMSE=%.5f mean=%.4f (reference %.4f)\n", n, errors.back(),
+                meanOf(test), meanOf(reference.mean));
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << i;
+  EXPECT_LT(errors.back(), 0.5 * errors.front());
+}
+
+}  // namespace
+}  // namespace gib::rt
