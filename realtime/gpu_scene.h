@@ -4,7 +4,8 @@
 //
 // GLSL side (realtime/scene/scene.glsl, included by techniques):
 //   layout(std430, binding = kMaterialBinding) buffer Materials { Material materials[]; };
-//   layout(std140, binding = kCameraBinding) uniform Camera { ... };
+//   layout(std140, binding = kCameraBinding) uniform Camera { ... } camera;
+// and realtime/scene/vertex.glsl, included by vertex shaders that draw the scene:
 //   vertex attributes: 0 position (vec3), 1 normal (vec3, unit, (b−a)×(c−a)), 2 material (uint).
 #pragma once
 

@@ -1,0 +1,78 @@
+#include "realtime/gbuffer.h"
+
+#include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/shader_library.h"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+
+namespace gib::rt {
+
+namespace {
+
+constexpr int kTargets = 3;  // position, normal, albedo
+// What a pixel no triangle covers holds: distance and material −1.
+constexpr float kBackground[4] = {0.0f, 0.0f, 0.0f, -1.0f};
+constexpr float kNoAlbedo[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+
+}  // namespace
+
+GBuffer::GBuffer(int width, int height)
+    : width_(width),
+      height_(height),
+      position_(gl::Texture::make2D(GL_RGBA32F, width, height)),
+      normal_(gl::Texture::make2D(GL_RGBA32F, width, height)),
+      albedo_(gl::Texture::make2D(GL_RGBA32F, width, height)),
+      depth_(gl::Texture::make2D(GL_DEPTH_COMPONENT32F, width, height)),
+      program_(gl::buildProgram({{GL_VERTEX_SHADER, "gbuffer/gbuffer.vert.glsl"},
+                                 {GL_FRAGMENT_SHADER, "gbuffer/gbuffer.frag.glsl"}})) {
+  // A deferred pass reads texels, never filtered values: blending a surface with the background
+  // or with another surface would be a position or normal that nothing has.
+  for (gl::Texture* texture : {&position_, &normal_, &albedo_})
+    texture->setFilter(GL_NEAREST, GL_NEAREST);
+  framebuffer_.attachColor(0, position_);
+  framebuffer_.attachColor(1, normal_);
+  framebuffer_.attachColor(2, albedo_);
+  framebuffer_.attachDepth(depth_);
+  framebuffer_.setDrawBuffers(kTargets);
+  framebuffer_.checkComplete();
+}
+
+void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
+  // The scene's camera is set up for its own image; a G-buffer of another shape would stretch it.
+  if (std::int64_t(width_) * scene.height() != std::int64_t(height_) * scene.width())
+    throw std::logic_error(fmt::format("a {}×{} G-buffer cannot hold a view of a {}×{} camera",
+                                       width_, height_, scene.width(), scene.height()));
+  std::optional<gl::PassProfiler::Scope> scope;
+  if (profiler) scope.emplace(profiler->pass("g-buffer"));
+
+  framebuffer_.bind();
+  glViewport(0, 0, width_, height_);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, kBackground);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 1, kBackground);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 2, kNoAlbedo);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
+
+  // Each pass sets the state it relies on. Both sides of a triangle reflect, so no culling.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  program_.use();
+  scene.bindSceneBuffers();
+  scene.draw();
+}
+
+void GBuffer::bindTextures(GLuint first) const {
+  position_.bind(first);
+  normal_.bind(first + 1);
+  albedo_.bind(first + 2);
+}
+
+}  // namespace gib::rt

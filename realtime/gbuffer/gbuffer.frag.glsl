@@ -1,0 +1,18 @@
+#include "scene/scene.glsl"
+
+in vec3 world_position;
+flat in vec3 world_normal;
+flat in uint material;
+
+layout(location = 0) out vec4 out_position;  // world position, w: distance along the ray
+layout(location = 1) out vec4 out_normal;    // geometric normal, front side; w: material
+layout(location = 2) out vec4 out_albedo;    // diffuse reflectance, w: 1
+
+void main() {
+  // The perspective-correct interpolation of a planar triangle's positions is the point the
+  // pixel's ray hits, so its distance from the eye is the path tracer's t.
+  out_position = vec4(world_position, length(world_position - camera.position.xyz));
+  // Not turned towards the camera: reflection is two-sided, but emission is not.
+  out_normal = vec4(world_normal, float(material));
+  out_albedo = vec4(materialDiffuse(material), 1.0);
+}

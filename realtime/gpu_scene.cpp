@@ -1,0 +1,224 @@
+#include "realtime/gpu_scene.h"
+
+#include "scene/camera.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+namespace gib::rt {
+
+namespace {
+
+// The vertex layout of scene.glsl's attributes 0, 1, 2: flat triangles, so every vertex carries
+// its triangle's normal and material.
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  std::uint32_t material;
+};
+static_assert(sizeof(Vertex) == 28, "Vertex must be tightly packed (attribute offsets below)");
+
+// std430 struct Material of scene.glsl.
+struct GpuMaterial {
+  glm::vec4 diffuse_type;       // rgb diffuse, w: 0 Lambert, 1 Phong
+  glm::vec4 specular_exponent;  // rgb specular, w: Phong exponent
+  glm::vec4 emission;           // rgb radiance, w unused
+};
+static_assert(sizeof(GpuMaterial) == 48);
+
+// std140 uniform block Camera of scene.glsl.
+struct CameraBlock {
+  glm::mat4 view_projection;
+  glm::mat4 view;
+  glm::mat4 projection;
+  glm::vec4 position;    // xyz, w 1
+  glm::vec4 near_far;    // x near, y far
+  glm::vec4 image_size;  // width, height, 1/width, 1/height
+};
+static_assert(sizeof(CameraBlock) == 3 * 64 + 3 * 16);
+
+// The unnormalised geometric normal (b − a) × (c − a): its direction is the front side, its length
+// twice the area.
+glm::vec3 triangleCross(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  return glm::cross(b - a, c - a);
+}
+
+glm::vec3 unitOrZero(const glm::vec3& v) {
+  const float length = glm::length(v);
+  return length > 0 ? v / length : glm::vec3(0.0f);  // degenerate triangles are never rasterised
+}
+
+struct Bounds {
+  glm::vec3 min{std::numeric_limits<float>::infinity()};
+  glm::vec3 max{-std::numeric_limits<float>::infinity()};
+  bool empty() const { return min.x > max.x; }
+  void add(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+};
+
+// Every mesh vertex and every medium particle's sphere. A scene with neither (nothing to see) gets
+// a unit box around its camera, so that the camera still has valid clip planes.
+Bounds sceneBounds(const scene::Scene& scene) {
+  Bounds bounds;
+  for (const scene::Mesh& mesh : scene.meshes)
+    for (const glm::vec3& p : mesh.positions) bounds.add(p);
+  for (const scene::MediumParticle& particle : scene.medium.particles) {
+    bounds.add(particle.centre - glm::vec3(particle.radius));
+    bounds.add(particle.centre + glm::vec3(particle.radius));
+  }
+  if (bounds.empty()) {
+    bounds.add(scene.camera.position - glm::vec3(1.0f));
+    bounds.add(scene.camera.position + glm::vec3(1.0f));
+  }
+  return bounds;
+}
+
+std::vector<Vertex> flatVertices(const scene::Scene& scene) {
+  std::vector<Vertex> vertices;
+  vertices.reserve(3 * scene.triangleCount());
+  for (const scene::Mesh& mesh : scene.meshes)
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+      const glm::vec3 normal = unitOrZero(triangleCross(a, b, c));
+      for (const glm::vec3& p : {a, b, c}) vertices.push_back({p, normal, mesh.material});
+    }
+  return vertices;
+}
+
+std::vector<GpuMaterial> gpuMaterials(const scene::Scene& scene) {
+  std::vector<GpuMaterial> materials;
+  for (const scene::Material& m : scene.materials) {
+    const float type = m.type == scene::MaterialType::kPhong ? 1.0f : 0.0f;
+    materials.push_back({glm::vec4(m.diffuse, type), glm::vec4(m.specular, m.exponent),
+                         glm::vec4(m.emission, 0.0f)});
+  }
+  return materials;
+}
+
+std::vector<EmitterTriangle> emitterTriangles(const scene::Scene& scene) {
+  std::vector<EmitterTriangle> emitters;
+  for (const scene::Mesh& mesh : scene.meshes) {
+    const scene::Material& material = scene.materials[mesh.material];
+    if (!material.isEmissive()) continue;
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+      const glm::vec3 cross = triangleCross(a, b, c);
+      const float twice_area = glm::length(cross);
+      if (twice_area <= 0) continue;  // emits nothing, and has no normal to sample with
+      emitters.push_back({a, b, c, cross / twice_area, 0.5f * twice_area, material.emission});
+    }
+  }
+  return emitters;
+}
+
+CameraBlock cameraBlock(const CameraTransform& camera, int width, int height) {
+  CameraBlock block;
+  block.view_projection = camera.projection * camera.view;
+  block.view = camera.view;
+  block.projection = camera.projection;
+  block.position = glm::vec4(camera.position, 1.0f);
+  block.near_far = glm::vec4(camera.near_plane, camera.far_plane, 0.0f, 0.0f);
+  block.image_size =
+      glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+  return block;
+}
+
+}  // namespace
+
+CameraTransform cameraTransform(const scene::Camera& camera, int width, int height,
+                                const glm::vec3& bounds_min, const glm::vec3& bounds_max) {
+  // The frame of scene::cameraRayDirection, so that both share every rounding of the basis.
+  const scene::CameraFrame frame = scene::makeCameraFrame(camera, width, height);
+  const glm::dvec3 right(frame.right), up(frame.up), forward(frame.forward), eye(frame.origin);
+
+  // View space: x along `right`, y along `up`, z along −forward. GL's window y grows upwards and
+  // the image's rows downwards, so `up` (towards image row 0) ends on GL's top row, which
+  // readPixels' row flip makes image row 0: the image is not mirrored.
+  glm::dmat4 view(1.0);
+  for (int i = 0; i < 3; ++i) {
+    view[i][0] = right[i];
+    view[i][1] = up[i];
+    view[i][2] = -forward[i];
+  }
+  view[3] = glm::dvec4(-glm::dot(right, eye), -glm::dot(up, eye), glm::dot(forward, eye), 1.0);
+
+  // Near plane: no visible bound point is closer along `forward` than its distance from the eye
+  // times the cosine of the angle to the frustum's corner ray. A camera inside the bounds falls
+  // back to 1e-4 of the extent: with DEPTH32F, depths still resolve to ~6e-4 of the distance at
+  // the far end (the resolution is ~6e-8·z/near relative).
+  const glm::dvec3 lo(bounds_min), hi(bounds_max);
+  const double extent = std::max(glm::length(hi - lo), 1e-6);
+  const double tan_y = frame.tan_half_fov_y, tan_x = tan_y * double(frame.aspect);
+  const double cos_corner = 1.0 / std::sqrt(1.0 + tan_x * tan_x + tan_y * tan_y);
+  const double distance_to_bounds = glm::length(glm::clamp(eye, lo, hi) - eye);
+  const double near_plane = std::max(1e-4 * extent, 0.99 * distance_to_bounds * cos_corner);
+  // Far plane: a little past the farthest corner (a distance bounds the depth along `forward`).
+  const glm::dvec3 farthest = glm::max(glm::abs(lo - eye), glm::abs(hi - eye));
+  const double far_plane = std::max(1.01 * glm::length(farthest), 2.0 * near_plane);
+
+  // The symmetric perspective whose clip-space x/w and y/w are exactly ndc_x and ndc_y of
+  // cameraRayDirection: the frame's own tangent and aspect, not glm::perspective's recomputation.
+  glm::dmat4 projection(0.0);
+  projection[0][0] = 1.0 / tan_x;
+  projection[1][1] = 1.0 / tan_y;
+  projection[2][2] = -(far_plane + near_plane) / (far_plane - near_plane);
+  projection[2][3] = -1.0;
+  projection[3][2] = -2.0 * far_plane * near_plane / (far_plane - near_plane);
+
+  CameraTransform transform;
+  transform.view = glm::mat4(view);
+  transform.projection = glm::mat4(projection);
+  transform.position = frame.origin;
+  transform.near_plane = float(near_plane);
+  transform.far_plane = float(far_plane);
+  return transform;
+}
+
+GpuScene::GpuScene(const scene::Scene& scene, int width, int height)
+    : scene_(&scene), width_(width), height_(height) {
+  const Bounds bounds = sceneBounds(scene);
+  bounds_min_ = bounds.min;
+  bounds_max_ = bounds.max;
+  camera_ = cameraTransform(scene.camera, width, height, bounds_min_, bounds_max_);
+  emitters_ = emitterTriangles(scene);
+
+  const std::vector<Vertex> vertices = flatVertices(scene);
+  vertex_count_ = vertices.size();
+  vertices_ = gl::Buffer::fromVector(vertices, 0);
+  materials_ = gl::Buffer::fromVector(gpuMaterials(scene), 0);
+  const CameraBlock block = cameraBlock(camera_, width, height);
+  camera_block_ = gl::Buffer(sizeof(block), &block, 0);
+
+  const GLuint vao = vertex_array_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
+  glVertexArrayAttribIFormat(vao, 2, 1, GL_UNSIGNED_INT, offsetof(Vertex, material));
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    glVertexArrayAttribBinding(vao, attribute, 0);
+    glEnableVertexArrayAttrib(vao, attribute);
+  }
+}
+
+void GpuScene::bindSceneBuffers() const {
+  materials_.bindBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding);
+  camera_block_.bindBase(GL_UNIFORM_BUFFER, kCameraBinding);
+}
+
+void GpuScene::draw() const {
+  if (vertex_count_ == 0) return;
+  vertex_array_.bind();
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
+}
+
+}  // namespace gib::rt
