@@ -46,10 +46,6 @@ void DirectTechnique::prepare(const GpuScene& scene, int width, int height) {
   };
   shade_point_ = shade(LightSampleKind::kPoint);
   shade_directional_ = shade(LightSampleKind::kDirectional);
-  const glm::vec3 camera = scene.camera().position;
-  for (const gl::Program* program : {&emission_, &shade_point_, &shade_directional_})
-    glProgramUniform3fv(program->id(), program->uniform("u_camera_position"), 1,
-                        glm::value_ptr(camera));
   glProgramUniform3fv(emission_.id(), emission_.uniform("u_sky_radiance"), 1,
                       glm::value_ptr(scene.scene().sky_radiance));
 }

@@ -4,7 +4,6 @@
 
 layout(binding = 0) uniform sampler2D u_gbuffer_position;
 layout(binding = 1) uniform sampler2D u_gbuffer_normal;
-uniform vec3 u_camera_position;
 uniform vec3 u_sky_radiance;
 layout(location = 0) out vec4 o_radiance;
 
@@ -16,7 +15,7 @@ void main() {
     return;
   }
   vec4 normal_material = texelFetch(u_gbuffer_normal, pixel, 0);
-  bool front = dot(normal_material.xyz, u_camera_position - position.xyz) > 0.0;
-  vec3 emission = materials[uint(normal_material.w)].emission.rgb;
+  bool front = dot(normal_material.xyz, camera.position.xyz - position.xyz) > 0.0;
+  vec3 emission = materialEmission(uint(normal_material.w));
   o_radiance = vec4(front ? emission : vec3(0.0), 1.0);
 }

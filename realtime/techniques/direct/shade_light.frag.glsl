@@ -6,7 +6,6 @@
 
 layout(binding = 0) uniform sampler2D u_gbuffer_position;  // xyz world, w ray distance (−1: none)
 layout(binding = 1) uniform sampler2D u_gbuffer_normal;    // xyz geometric normal, w material
-uniform vec3 u_camera_position;
 uniform vec3 u_light_intensity;
 uniform float u_cos_cone;
 uniform float u_exponent;
@@ -17,9 +16,9 @@ void main() {
   vec4 position = texelFetch(u_gbuffer_position, pixel, 0);
   if (position.w < 0.0) discard;
   vec4 normal_material = texelFetch(u_gbuffer_normal, pixel, 0);
-  Material material = materials[uint(normal_material.w)];
+  uint material = uint(normal_material.w);
   vec3 p = position.xyz;
-  vec3 wo = normalize(u_camera_position - p);
+  vec3 wo = normalize(camera.position.xyz - p);
   vec3 n = normal_material.xyz;
   if (dot(n, wo) < 0.0) n = -n;  // reflection is two-sided
 
@@ -37,7 +36,7 @@ void main() {
 #endif
   float cos_surface = dot(n, wi);
   if (cos_surface <= 0.0) discard;
-  vec3 f = evaluateBrdf(material.diffuse_type.rgb, material.specular_exponent.rgb,
-                        material.specular_exponent.w, material.diffuse_type.w > 0.5, n, wo, wi);
+  vec3 f = evaluateBrdf(materialDiffuse(material), materialSpecular(material),
+                        materialExponent(material), materialIsPhong(material), n, wo, wi);
   o_radiance = vec4(f * irradiance * (cos_surface * lightVisibility(p, n)), 0.0);
 }
