@@ -1,13 +1,18 @@
 #include "realtime/gl/pass_profiler.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <stdexcept>
 
 namespace gib::rt::gl {
 
 PassProfiler::PassProfiler(bool precise, int latency) : precise_(precise), latency_(latency) {
+  if (latency < 0) throw std::invalid_argument("profiler latency must be 0 or more frames");
   record_.precise = precise;
   record_.reported_clock = precise ? "cpu" : "gpu";
   record_.passes.push_back(PassRecord{"frame", "frame", 0, {}, {}, {}});
+  parents_.push_back(0);
 }
 
 PassProfiler::Scope::Scope(Scope&& other) noexcept
@@ -24,22 +29,19 @@ Query PassProfiler::takeQuery() {
   return q;
 }
 
-std::size_t PassProfiler::findOrAddPass(std::string_view name, std::string_view parent_path,
-                                        int depth) {
-  std::string path = std::string(parent_path) + "/" + std::string(name);
-  for (std::size_t i = 0; i < record_.passes.size(); ++i)
-    if (record_.passes[i].path == path) return i;
-  record_.passes.push_back(PassRecord{std::string(name), path, depth, {}, {}, {}});
+std::size_t PassProfiler::findOrAddPass(std::string_view name, std::size_t parent) {
+  // Compared by parent and name rather than by path, so that a pass seen before (every pass
+  // after the first frame) costs no string building.
+  for (std::size_t i = 1; i < record_.passes.size(); ++i)
+    if (parents_[i] == parent && record_.passes[i].name == name) return i;
+  const PassRecord& up = record_.passes[parent];
+  record_.passes.push_back(
+      PassRecord{std::string(name), fmt::format("{}/{}", up.path, name), up.depth + 1, {}, {}, {}});
+  parents_.push_back(parent);
   return record_.passes.size() - 1;
 }
 
-std::size_t PassProfiler::open(std::string_view name) {
-  std::size_t pass = 0;
-  if (!current_.entries.empty()) {
-    const Entry& parent = current_.entries[open_stack_.back()];
-    const PassRecord& parent_record = record_.passes[parent.pass];
-    pass = findOrAddPass(name, parent_record.path, parent_record.depth + 1);
-  }
+std::size_t PassProfiler::open(std::size_t pass) {
   Entry entry{pass, takeQuery(), takeQuery(), {}, {}};
   if (precise_) glFinish();
   entry.cpu_begin = Clock::now();
@@ -49,75 +51,106 @@ std::size_t PassProfiler::open(std::string_view name) {
   return current_.entries.size() - 1;
 }
 
-void PassProfiler::close(std::size_t index) {
-  if (open_stack_.empty() || open_stack_.back() != index)
-    throw std::logic_error("profiler passes must end in the reverse order of their start");
+void PassProfiler::close(std::size_t index) noexcept {
   Entry& entry = current_.entries[index];
   glQueryCounter(entry.end.id(), GL_TIMESTAMP);
   if (precise_) glFinish();
   entry.cpu_end = Clock::now();
-  open_stack_.pop_back();
+  // Called from a destructor, so a pass ending before one opened inside it cannot throw here:
+  // it is noted, and endFrame reports it.
+  const auto it = std::find(open_stack_.begin(), open_stack_.end(), index);
+  if (it == open_stack_.end()) return;
+  if (it + 1 != open_stack_.end()) misnested_ = true;
+  open_stack_.erase(it);
+}
+
+bool PassProfiler::ready(const Frame& frame) {
+  // GL does not promise that queries become available in the order they were issued, so every
+  // one is asked; entries[0] (the frame: first begin, last end) usually answers "not yet" first.
+  return std::all_of(frame.entries.begin(), frame.entries.end(), [](const Entry& entry) {
+    return entry.begin.available() && entry.end.available();
+  });
 }
 
 void PassProfiler::beginFrame(bool measured) {
   if (in_frame_) throw std::logic_error("beginFrame called twice without endFrame");
   // Collect frames whose queries have landed; wait only when too many are in flight.
   while (!in_flight_.empty()) {
-    Frame& oldest = in_flight_.front();
-    const bool ready = oldest.entries.empty() || oldest.entries.back().end.available();
-    if (!ready && int(in_flight_.size()) < latency_) break;
-    collect(oldest);
+    if (int(in_flight_.size()) < latency_ && !ready(in_flight_.front())) break;
+    collect(in_flight_.front());
     in_flight_.pop_front();
   }
   in_frame_ = true;
   current_ = Frame{measured, {}};
-  open(record_.passes[0].name);
+  open(0);
 }
 
 PassProfiler::Scope PassProfiler::pass(std::string_view name) {
   if (!in_frame_) return Scope(nullptr, 0);
-  return Scope(this, open(name));
+  if (name.find('/') != std::string_view::npos)
+    throw std::invalid_argument(fmt::format("pass name '{}' contains '/'", name));
+  const std::size_t parent = current_.entries[open_stack_.back()].pass;
+  return Scope(this, open(findOrAddPass(name, parent)));
 }
 
 void PassProfiler::endFrame() {
   if (!in_frame_) throw std::logic_error("endFrame without beginFrame");
+  if (open_stack_.size() > 1) {
+    const std::size_t pass = current_.entries[open_stack_.back()].pass;
+    throw std::logic_error(
+        fmt::format("pass '{}' is still open at the end of the frame", record_.passes[pass].path));
+  }
   close(0);
-  if (!open_stack_.empty()) throw std::logic_error("a pass is still open at the end of the frame");
   in_frame_ = false;
-  in_flight_.push_back(std::move(current_));
-  current_ = Frame{};
+  Frame frame = std::exchange(current_, Frame{});
+  if (std::exchange(misnested_, false)) {
+    recycle(frame);
+    throw std::logic_error(
+        "profiler passes must end in the reverse order of their start; the frame is dropped");
+  }
+  in_flight_.push_back(std::move(frame));
 }
 
 void PassProfiler::collect(Frame& frame) {
-  if (frame.measured) {
-    // Sum repeated entries of a pass; passes absent from this frame get zero.
-    std::vector<double> gpu(record_.passes.size(), 0.0), cpu(record_.passes.size(), 0.0);
-    std::vector<int> calls(record_.passes.size(), 0);
-    for (Entry& entry : frame.entries) {
-      const std::uint64_t begin = entry.begin.result(), end = entry.end.result();
-      gpu[entry.pass] += end > begin ? double(end - begin) * 1e-6 : 0.0;
-      cpu[entry.pass] +=
-          std::chrono::duration<double, std::milli>(entry.cpu_end - entry.cpu_begin).count();
-      ++calls[entry.pass];
-    }
-    const std::size_t earlier = std::size_t(record_.measured_frames);
-    for (std::size_t p = 0; p < record_.passes.size(); ++p) {
-      PassRecord& pass = record_.passes[p];
-      pass.gpu_ms.resize(earlier, 0.0);  // a pass first seen now was absent before
-      pass.cpu_ms.resize(earlier, 0.0);
-      pass.calls.resize(earlier, 0);
-      pass.gpu_ms.push_back(gpu[p]);
-      if (precise_) pass.cpu_ms.push_back(cpu[p]);
-      pass.calls.push_back(calls[p]);
-    }
-    ++record_.measured_frames;
-  } else {
+  if (!frame.measured) {
     ++record_.warmup_frames;
+    recycle(frame);
+    return;
   }
+  // Sum repeated entries of a pass; passes absent from this frame get zero.
+  const std::size_t passes = record_.passes.size();
+  std::vector<double> gpu(passes, 0.0), cpu(passes, 0.0);
+  std::vector<int> calls(passes, 0);
+  for (const Entry& entry : frame.entries) {
+    const std::uint64_t begin = entry.begin.result(), end = entry.end.result();
+    gpu[entry.pass] += end > begin ? double(end - begin) * 1e-6 : 0.0;
+    cpu[entry.pass] +=
+        std::chrono::duration<double, std::milli>(entry.cpu_end - entry.cpu_begin).count();
+    ++calls[entry.pass];
+  }
+  const std::size_t earlier = std::size_t(record_.measured_frames);
+  for (std::size_t p = 0; p < passes; ++p) {
+    PassRecord& pass = record_.passes[p];
+    pass.gpu_ms.resize(earlier, 0.0);  // a pass first seen now was absent before
+    pass.gpu_ms.push_back(gpu[p]);
+    pass.calls.resize(earlier, 0);
+    pass.calls.push_back(calls[p]);
+    if (precise_) {  // without precise mode there is no CPU clock to keep
+      pass.cpu_ms.resize(earlier, 0.0);
+      pass.cpu_ms.push_back(cpu[p]);
+    }
+  }
+  ++record_.measured_frames;
+  recycle(frame);
+}
+
+void PassProfiler::recycle(Frame& frame) {
+  // Reissuing a query whose result was never read is allowed: the new result replaces it.
   for (Entry& entry : frame.entries) {
     spare_queries_.push_back(std::move(entry.begin));
     spare_queries_.push_back(std::move(entry.end));
   }
+  frame.entries.clear();
 }
 
 ProfileRecord PassProfiler::finish() {
@@ -126,10 +159,13 @@ ProfileRecord PassProfiler::finish() {
     collect(in_flight_.front());
     in_flight_.pop_front();
   }
-  // Without precise mode there is no CPU clock to keep.
-  if (!precise_)
-    for (PassRecord& pass : record_.passes) pass.cpu_ms.clear();
-  return record_;
+  ProfileRecord out = record_;
+  // A pass seen only in warm-up frames (one-off set-up work) would read as a pass that costs 0.
+  std::erase_if(out.passes, [&](const PassRecord& pass) {
+    return pass.depth > 0 &&
+           std::all_of(pass.calls.begin(), pass.calls.end(), [](int calls) { return calls == 0; });
+  });
+  return out;
 }
 
 }  // namespace gib::rt::gl

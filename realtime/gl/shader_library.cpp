@@ -18,18 +18,17 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 16;
 
-void expandInto(std::string_view path, std::string_view (*lookup)(std::string_view),
-                ExpandedSource& out, std::vector<std::string>& stack) {
+void expandInto(std::string_view path, const GlslLookup& lookup, ExpandedSource& out,
+                std::vector<std::string>& stack) {
   if (stack.size() > kMaxIncludeDepth || std::find(stack.begin(), stack.end(), path) != stack.end())
     throw ShaderError(
         fmt::format("{}: #include cycle or nesting deeper than {}", path, kMaxIncludeDepth));
   auto found = std::find(out.files.begin(), out.files.end(), path);
   if (found != out.files.end() && !stack.empty()) return;  // included once, like #pragma once
-  const std::size_t number = out.files.size();
+  const int number = int(out.files.size());
   out.files.emplace_back(path);
   stack.emplace_back(path);
   const std::string_view text = lookup(path);
-  out.text += fmt::format("#line 1 {}\n", number);
   int line = 0;
   for (std::size_t start = 0; start < text.size();) {
     std::size_t end = text.find('\n', start);
@@ -43,7 +42,6 @@ void expandInto(std::string_view path, std::string_view (*lookup)(std::string_vi
       if (open == std::string_view::npos || close <= open)
         throw ShaderError(fmt::format("{}:{}: #include needs a quoted path", path, line));
       expandInto(row.substr(open + 1, close - open - 1), lookup, out, stack);
-      out.text += fmt::format("#line {} {}\n", line + 1, number);
       continue;
     }
     if (first != std::string_view::npos && row.substr(first).starts_with("#version"))
@@ -51,6 +49,7 @@ void expandInto(std::string_view path, std::string_view (*lookup)(std::string_vi
           "{}:{}: leave out #version; every stage is compiled as 450 core", path, line));
     out.text.append(row);
     out.text += '\n';
+    out.lines.push_back({number, line});
   }
   stack.pop_back();
 }
@@ -72,30 +71,42 @@ std::string stageName(GLenum type) {
 }  // namespace
 
 ExpandedSource expandIncludes(std::string_view path, std::string_view defines,
-                              std::string_view (*lookup)(std::string_view)) {
+                              const GlslLookup& lookup) {
   ExpandedSource out;
   out.text = "#version 450 core\n";
+  out.lines.push_back({SourceLine::kDefinesFile, 0});
   out.text += defines;
   if (!defines.empty() && defines.back() != '\n') out.text += '\n';
+  const auto define_lines = int(std::count(out.text.begin(), out.text.end(), '\n')) - 1;
+  for (int line = 1; line <= define_lines; ++line)
+    out.lines.push_back({SourceLine::kDefinesFile, line});
   std::vector<std::string> stack;
   expandInto(path, lookup, out, stack);
   return out;
 }
 
-std::string translateInfoLog(std::string_view log, const std::vector<std::string>& files) {
-  // Mesa: "0:12(3): error"; NVIDIA: "0(12) : error".
-  static const std::regex location(R"((^|\n)(\d+)(?::(\d+)\((\d+)\)|\((\d+)\)))");
+std::string translateInfoLog(std::string_view log, const ExpandedSource& source) {
+  // Mesa: "0:12(3): error"; NVIDIA: "0(12) : error". The leading number is the source string,
+  // always 0 here (one string per stage).
+  static const std::regex location(R"((^|\n)\d+(?::(\d+)\(\d+\)|\((\d+)\)))");
   std::string out;
   std::string text(log);
-  auto begin = std::sregex_iterator(text.begin(), text.end(), location);
   std::size_t copied = 0;
-  for (auto it = begin; it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), location);
+       it != std::sregex_iterator(); ++it) {
     const std::smatch& m = *it;
-    const std::size_t number = std::stoul(m[2].str());
-    const std::string line = m[3].matched ? m[3].str() : m[5].str();
+    const std::size_t line = std::stoul(m[2].matched ? m[2].str() : m[3].str());
     out.append(text, copied, std::size_t(m.position(0)) - copied);
     out += m[1].str();
-    out += fmt::format("realtime/{}:{}", number < files.size() ? files[number] : "?", line);
+    if (line == 0 || line > source.lines.size()) {
+      out += fmt::format("?:{}", line);
+    } else {
+      const SourceLine origin = source.lines[line - 1];
+      if (origin.file == SourceLine::kDefinesFile)
+        out += fmt::format("defines:{}", origin.line);
+      else
+        out += fmt::format("realtime/{}:{}", source.files[std::size_t(origin.file)], origin.line);
+    }
     copied = std::size_t(m.position(0) + m.length(0));
   }
   out.append(text, copied);
@@ -103,7 +114,8 @@ std::string translateInfoLog(std::string_view log, const std::vector<std::string
   return out;
 }
 
-Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view defines) {
+Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view defines,
+                     const GlslLookup& lookup) {
   Program program(glCreateProgram());
   std::vector<GLuint> shaders;
   std::vector<std::string> names;
@@ -111,7 +123,7 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
     for (GLuint s : shaders) glDeleteShader(s);
   };
   for (const ShaderStage& stage : stages) {
-    const ExpandedSource source = expandIncludes(stage.path, defines);
+    const ExpandedSource source = expandIncludes(stage.path, defines, lookup);
     const GLuint shader = glCreateShader(stage.type);
     shaders.push_back(shader);
     names.push_back(stage.path);
@@ -128,7 +140,7 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
       cleanup();
       throw ShaderError(fmt::format("{} shader realtime/{} does not compile:\n{}",
                                     stageName(stage.type), stage.path,
-                                    translateInfoLog(log, source.files)));
+                                    translateInfoLog(log, source)));
     }
     glAttachShader(program.id(), shader);
   }

@@ -1,7 +1,8 @@
 // Programs from the embedded GLSL files. A file names its dependencies with
-// `#include "path"` (relative to realtime/), expanded here with `#line` directives so that a
-// compile error reports the file and line it comes from. Files carry no #version: every stage is
-// compiled as `#version 450 core` followed by the caller's defines.
+// `#include "path"` (relative to realtime/), expanded here with a map from each line of the
+// expanded text back to its file and line, so that a compile error reports where it comes from.
+// Files carry no #version: every stage is compiled as `#version 450 core` followed by the
+// caller's defines.
 #pragma once
 
 #include "realtime/gl/embedded_glsl.h"
@@ -9,6 +10,7 @@
 
 #include <stdexcept>
 
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -30,20 +32,38 @@ struct ShaderStage {
 // The text of an embedded file; throws ShaderError if there is none of that path.
 std::string_view glslFile(std::string_view path);
 
-// Source after #include expansion, and the file each source-string number stands for.
+// Where sources come from: a path relative to realtime/ → its text (throwing ShaderError when
+// there is none). glslFile by default; tests pass in-memory sources, since a .glsl file under
+// realtime/ would be embedded in the product.
+using GlslLookup = std::function<std::string_view(std::string_view)>;
+
+// Where one line of an expanded source comes from.
+struct SourceLine {
+  int file;  // index into ExpandedSource::files; kDefinesFile for #version and the defines
+  int line;  // 1-based in that file (in the defines string; 0 for the #version line)
+  static constexpr int kDefinesFile = -1;
+  bool operator==(const SourceLine&) const = default;
+};
+
+// Source after #include expansion. It has no #line directives: Mesa drops their source-string
+// number from most error locations (its parser's YYLLOC_DEFAULT resets it to 0), so a file
+// number would be lost; the line number of the one expanded string is kept by every driver and
+// is looked up in `lines` instead.
 struct ExpandedSource {
   std::string text;
-  std::vector<std::string> files;  // index = GLSL source-string number used in #line
+  std::vector<std::string> files;  // the stage's own file first, then each include once
+  std::vector<SourceLine> lines;   // one per line of `text`: lines[n − 1] is line n
 };
-// `lookup` returns a file's text (the embedded files by default; tests pass their own).
 ExpandedSource expandIncludes(std::string_view path, std::string_view defines,
-                              std::string_view (*lookup)(std::string_view) = glslFile);
+                              const GlslLookup& lookup = glslFile);
 
 // Rewrites a driver's info log ("0:12(3): error: ..." from Mesa, "0(12) : error ..." from
-// NVIDIA) so that each location reads "path:line".
-std::string translateInfoLog(std::string_view log, const std::vector<std::string>& files);
+// NVIDIA, 12 being a line of the expanded text) so that each location reads
+// "realtime/<file>:<line>", or "defines:<line>" for an error in the defines.
+std::string translateInfoLog(std::string_view log, const ExpandedSource& source);
 
 // Compiles and links the stages; `defines` is inserted after #version ("#define N 4\n...").
-Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view defines = "");
+Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view defines = "",
+                     const GlslLookup& lookup = glslFile);
 
 }  // namespace gib::rt::gl
