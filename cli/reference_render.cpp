@@ -13,9 +13,9 @@
 namespace gib::cli {
 
 int renderReference(const RenderOptions& o, const CLI::App& app) {
-  const std::vector<std::string> foreign = givenOptions(
-      app, {"--set", "--frames", "--warmup", "--iterations", "--clock", "--gl-device",
-            "--timings-json"});
+  const std::vector<std::string> foreign =
+      givenOptions(app, {"--set", "--frames", "--warmup", "--iterations", "--clock", "--gl-device",
+                         "--timings-json"});
   if (!foreign.empty())
     throw InputError(fmt::format(
         "{} applies to real-time techniques, not the reference; the reference takes --spp, "

@@ -27,7 +27,9 @@ CommandRunner addRenderCommand(CLI::App& app) {
   render->add_option("--out", o->out, "output EXR (a PNG is written beside it)")->required();
 
   const char* kReference = "Reference path tracer";
-  render->add_option("--spp", o->spp, "samples per pixel")->capture_default_str()->group(kReference);
+  render->add_option("--spp", o->spp, "samples per pixel")
+      ->capture_default_str()
+      ->group(kReference);
   render->add_option("--seed", o->seed, "random seed")->capture_default_str()->group(kReference);
   render
       ->add_option("--min-bounces", o->min_bounces,
@@ -38,8 +40,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->add_option("--max-bounces", o->max_bounces,
                    "only paths with at most this many bounces (default: unlimited)")
       ->group(kReference);
-  render
-      ->add_option("--threads", o->threads, "worker threads, 0 = all cores (same image)")
+  render->add_option("--threads", o->threads, "worker threads, 0 = all cores (same image)")
       ->capture_default_str()
       ->group(kReference);
   render
@@ -52,7 +53,9 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->add_option("--set", o->set,
                    "technique parameter key=value (repeatable; see `gibench list techniques`)")
       ->group(kTechnique);
-  render->add_option("--frames", o->frames, "measured frames")->capture_default_str()->group(kTechnique);
+  render->add_option("--frames", o->frames, "measured frames")
+      ->capture_default_str()
+      ->group(kTechnique);
   render->add_option("--warmup", o->warmup, "warm-up frames before measuring")
       ->capture_default_str()
       ->group(kTechnique);
@@ -69,8 +72,9 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->capture_default_str()
       ->group(kTechnique);
   render
-      ->add_option("--gl-device", o->gl_device,
-                   "EGL device: auto, surfaceless or an index (default: $GIBENCH_GL_DEVICE or auto)")
+      ->add_option(
+          "--gl-device", o->gl_device,
+          "EGL device: auto, surfaceless or an index (default: $GIBENCH_GL_DEVICE or auto)")
       ->group(kTechnique);
   render->add_option("--timings-json", o->timings_json, "also write the pass timings as JSON here")
       ->group(kTechnique);

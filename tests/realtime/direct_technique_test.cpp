@@ -44,8 +44,8 @@ TechniqueRunSettings smallRun(int width, int height) {
   return settings;
 }
 
-image::Image renderDirect(const scene::Scene& scene, const std::vector<std::string>& set,
-                          int width, int height) {
+image::Image renderDirect(const scene::Scene& scene, const std::vector<std::string>& set, int width,
+                          int height) {
   const TechniqueInfo& info = findTechnique("direct");
   const ParameterValues values = parseParameters(info.parameters, set, "technique 'direct'");
   TechniqueRunResult result = runTechnique(scene, info, values, smallRun(width, height));
@@ -122,21 +122,24 @@ TEST(DirectTechnique, SkyOnAPlaneMatchesTheReferenceWithManyDirections) {
 }
 
 // Error of `direct` against the reference direct-only Cornell box as light samples grow: the
-// approximation converges (shadow maps stay, so the error levels off above zero).
+// area light's penumbrae converge, then the error levels off at what shadow maps and one sample
+// per pixel (against the reference's pixel-area average) leave. The reference is a fixed render
+// (seed 0), so the comparisons are deterministic.
 TEST(DirectTechnique, CornellErrorFallsAsLightSamplesGrow) {
   const scene::Scene scene = scene::loadScene("cornell", {});
   const int w = 64, h = 64;
   const ref::RenderResult reference = renderDirectReference(scene, w, h, 256);
-  std::vector<double> errors;
+  std::vector<double> errors, mape;
   for (int n : {1, 4, 16, 64}) {
     const image::Image test =
         renderDirect(scene, {"shadow=pcf", "light_samples=" + std::to_string(n)}, w, h);
     errors.push_back(metrics::computeRelMse(reference.mean, test).value);
-    std::printf("light_samples=%d relMSE=%.5f mean=%.4f (reference %.4f)\n", n, errors.back(),
-                meanOf(test), meanOf(reference.mean));
+    mape.push_back(metrics::computeMape(reference.mean, test).value);
+    std::printf("light_samples=%d relMSE=%.5f MAPE=%.4f\n", n, errors.back(), mape.back());
   }
-  for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << i;
-  EXPECT_LT(errors.back(), 0.5 * errors.front());
+  EXPECT_LT(errors[1], 0.5 * errors[0]);
+  for (std::size_t i = 2; i < errors.size(); ++i) EXPECT_LT(errors[i], 1.02 * errors[i - 1]) << i;
+  EXPECT_LT(mape.back(), 0.06);
 }
 
 }  // namespace

@@ -39,10 +39,9 @@ void DirectTechnique::prepare(const GpuScene& scene, int width, int height) {
   emission_ = gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
                                 {GL_FRAGMENT_SHADER, "techniques/direct/emission.frag.glsl"}});
   auto shade = [&](LightSampleKind kind) {
-    return gl::buildProgram(
-        {{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
-         {GL_FRAGMENT_SHADER, "techniques/direct/shade_light.frag.glsl"}},
-        shadow_maps_->defines(kind));
+    return gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
+                             {GL_FRAGMENT_SHADER, "techniques/direct/shade_light.frag.glsl"}},
+                            shadow_maps_->defines(kind));
   };
   shade_point_ = shade(LightSampleKind::kPoint);
   shade_directional_ = shade(LightSampleKind::kDirectional);

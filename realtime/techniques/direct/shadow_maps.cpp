@@ -16,8 +16,8 @@ namespace {
 
 // GL's cube-map face order (+x, −x, +y, −y, +z, −z) and the up vectors that make a face
 // rendered with lookAt read back correctly through a direction lookup.
-constexpr glm::vec3 kFaceAxis[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                    {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+constexpr glm::vec3 kFaceAxis[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
 constexpr glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
                                   {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
 // Largest angle between a 90° face's axis and a direction it covers (to its corners).

@@ -48,8 +48,8 @@ class ShadowMaps {
   glm::mat4 flatViewProjection(const LightSample& sample) const;
 
   ShadowSettings settings_;
-  float near_, far_;                  // cube faces
-  glm::vec3 centre_;                  // bounding sphere of the scene
+  float near_, far_;  // cube faces
+  glm::vec3 centre_;  // bounding sphere of the scene
   float radius_;
   gl::Program depth_point_, depth_flat_, blur_point_, blur_flat_;
   gl::Texture cube_depth_, cube_moments_, cube_scratch_;
