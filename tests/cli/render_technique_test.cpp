@@ -54,6 +54,29 @@ TEST(RenderTechnique, DirectWritesExrPngTimingsAndTable) {
   EXPECT_TRUE(found_shadow) << timings.dump(1);
 }
 
+TEST(RenderTechnique, NoEglDriverIsOneLineNamingTheMesaPackageAndExitCodeTwo) {
+  TempDir dir;
+  // GLVND finds no vendor library: what a machine without Mesa's EGL looks like.
+  CommandResult r = runGibench({"render", "--scene", "cornell", "--technique", "direct", "--out",
+                                (dir / "direct.exr").string()},
+                               dir.path(), {"__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(countLines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("libegl-mesa0"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "direct.exr"));
+}
+
+TEST(RenderTechnique, GlDeviceChoiceIsRecorded) {
+  TempDir dir;
+  CommandResult r = runGibench({"render", "--scene", "cornell", "--technique", "direct", "--width",
+                                "16", "--height", "16", "--frames", "1", "--warmup", "0",
+                                "--gl-device", "surfaceless", "--out",
+                                (dir / "direct.exr").string()},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(image::readExr(dir / "direct.exr").metadata["gibench/gl_device"], "surfaceless");
+}
+
 TEST(ListCommand, ListsTechniquesWithTheirParameters) {
   TempDir dir;
   CommandResult r = runGibench({"list", "techniques"}, dir.path());

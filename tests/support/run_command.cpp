@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 extern char** environ;
 
@@ -25,7 +26,8 @@ std::string readFile(const std::filesystem::path& path) {
 }  // namespace
 
 CommandResult runGibench(const std::vector<std::string>& args,
-                         const std::filesystem::path& work_dir) {
+                         const std::filesystem::path& work_dir,
+                         const std::vector<std::string>& environment) {
 #ifndef GIB_GIBENCH_PATH
   throw std::runtime_error("tests were built without the gibench binary");
 #else
@@ -43,8 +45,16 @@ CommandResult runGibench(const std::vector<std::string>& args,
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(),
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  // GL debug output on: a GL error in any command fails it (exit 3), hence the test.
+  std::vector<std::string> env_strings = environment;
+  env_strings.push_back("GIBENCH_GL_DEBUG=1");
+  for (char** e = environ; *e; ++e)
+    if (std::string_view(*e).substr(0, 17) != "GIBENCH_GL_DEBUG=") env_strings.emplace_back(*e);
+  std::vector<char*> env;
+  for (std::string& s : env_strings) env.push_back(s.data());
+  env.push_back(nullptr);
   pid_t pid = 0;
-  int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), env.data());
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0) throw std::runtime_error("cannot start " + argv_strings[0]);
   int status = 0;

@@ -13,9 +13,11 @@ struct CommandResult {
   std::string err;
 };
 
-// Arguments are passed without a shell; `work_dir` holds the captured streams.
+// Arguments are passed without a shell; `work_dir` holds the captured streams. The command runs
+// with GIBENCH_GL_DEBUG=1 (a GL error fails it) and `environment` ("NAME=value") added.
 CommandResult runGibench(const std::vector<std::string>& args,
-                         const std::filesystem::path& work_dir);
+                         const std::filesystem::path& work_dir,
+                         const std::vector<std::string>& environment = {});
 
 // Number of lines in `text` (a final line without '\n' counts).
 int countLines(const std::string& text);
