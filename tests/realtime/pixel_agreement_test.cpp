@@ -32,6 +32,11 @@ struct Case {
   double min_hit_fraction;  // so that agreement on empty pixels cannot pass the test alone
 };
 
+// Test names and failure messages show the case, not its bytes.
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.scene << " " << c.width << "x" << c.height;
+}
+
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
   return info.param.scene + "_" + std::to_string(info.param.width) + "x" +
          std::to_string(info.param.height);
