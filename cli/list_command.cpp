@@ -3,6 +3,7 @@
 #include "metrics/metric_registry.h"
 #include "realtime/technique.h"
 #include "scene/builtin_scenes.h"
+#include "scene/path_class.h"
 
 #include <fmt/format.h>
 
@@ -31,6 +32,11 @@ CommandRunner addListCommand(CLI::App& app) {
       for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) {
         fmt::print("{:<10} {}\n", info.name, info.description);
         fmt::print("{:<10}   source: {}\n", "", info.source);
+        // Constructing a technique does no GL work (that is prepare's), so the list needs no
+        // context to say which paths the defaults model.
+        const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
+        fmt::print("{:<10}   path class (defaults): {}\n", "",
+                   scene::describePathClass(info.create(defaults)->pathClass()));
         for (const std::string& line : describeParameters(info.parameters))
           fmt::print("{:<10}   --set {}\n", "", line);
       }

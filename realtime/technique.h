@@ -27,6 +27,8 @@ struct Frame {
   gl::PassProfiler& profiler;
 };
 
+// Constructing a technique (TechniqueInfo::create) must do no GL work: `gibench list` builds one
+// without a context to ask its path class. GL objects are made in prepare().
 class Technique {
  public:
   virtual ~Technique() = default;

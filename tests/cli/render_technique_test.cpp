@@ -18,10 +18,26 @@ namespace fs = std::filesystem;
 
 TEST(RenderTechnique, DirectWritesExrPngTimingsAndTable) {
   TempDir dir;
-  CommandResult r = runGibench({"render", "--scene", "cornell", "--technique", "direct", "--set",
-                                "shadow=pcf", "--set", "light_samples=4", "--width", "40",
-                                "--height", "30", "--warmup", "1", "--frames", "3",
-                                "--timings-json", (dir / "t.json").string(), "--out",
+  CommandResult r = runGibench({"render",
+                                "--scene",
+                                "cornell",
+                                "--technique",
+                                "direct",
+                                "--set",
+                                "shadow=pcf",
+                                "--set",
+                                "light_samples=4",
+                                "--width",
+                                "40",
+                                "--height",
+                                "30",
+                                "--warmup",
+                                "1",
+                                "--frames",
+                                "3",
+                                "--timings-json",
+                                (dir / "t.json").string(),
+                                "--out",
                                 (dir / "direct.exr").string()},
                                dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -68,11 +84,11 @@ TEST(RenderTechnique, NoEglDriverIsOneLineNamingTheMesaPackageAndExitCodeTwo) {
 
 TEST(RenderTechnique, GlDeviceChoiceIsRecorded) {
   TempDir dir;
-  CommandResult r = runGibench({"render", "--scene", "cornell", "--technique", "direct", "--width",
-                                "16", "--height", "16", "--frames", "1", "--warmup", "0",
-                                "--gl-device", "surfaceless", "--out",
-                                (dir / "direct.exr").string()},
-                               dir.path());
+  CommandResult r =
+      runGibench({"render", "--scene", "cornell", "--technique", "direct", "--width", "16",
+                  "--height", "16", "--frames", "1", "--warmup", "0", "--gl-device", "surfaceless",
+                  "--out", (dir / "direct.exr").string()},
+                 dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(image::readExr(dir / "direct.exr").metadata["gibench/gl_device"], "surfaceless");
 }
@@ -81,7 +97,8 @@ TEST(ListCommand, ListsTechniquesWithTheirParameters) {
   TempDir dir;
   CommandResult r = runGibench({"list", "techniques"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* part : {"reference", "direct", "shadow", "light_samples", "shadow_map_size"})
+  for (const char* part :
+       {"reference", "direct", "shadow", "light_samples", "shadow_map_size", "LE + LDE"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
 }
 
