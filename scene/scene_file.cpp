@@ -2,10 +2,10 @@
 
 #include "common/input_error.h"
 #include "common/join.h"
+#include "common/toml_reader.h"
 
 #include <fmt/format.h>
 #include <tiny_obj_loader.h>
-#include <toml++/toml.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -26,93 +26,27 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxImageSide = 32768;  // beyond any display or render target we would make
 
-// Formats every problem as "<file>:<line>:<column>: <problem>; <fix>".
-class ErrorReporter {
- public:
-  explicit ErrorReporter(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const toml::source_region& at, std::string_view problem,
-                         std::string_view fix) const {
-    // Nodes toml++ makes up (the implicit `materials` of [materials.white]) have no position.
-    const auto line = std::max<toml::source_index>(at.begin.line, 1);
-    const auto column = std::max<toml::source_index>(at.begin.column, 1);
-    throw InputError(fmt::format("{}:{}:{}: {}; {}", file_, line, column, problem, fix));
-  }
-  [[noreturn]] void fail(const toml::node& at, std::string_view problem,
-                         std::string_view fix) const {
-    fail(at.source(), problem, fix);
-  }
-
-  const std::string& file() const { return file_; }
-
- private:
-  std::string file_;
-};
-
-std::string joinKeys(const std::vector<std::string>& keys) {
-  return joinNames(keys, ", ", [](const std::string& key) { return key; });
-}
-
-// The value of an integer or floating-point node; NaN for anything else.
-double numberValue(const toml::node& node) {
-  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
-  if (const auto* f = node.as_floating_point()) return f->get();
-  return NAN;
-}
+using ErrorReporter = TomlErrorReporter;
 
 bool isFinite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// One TOML table with the keys it may hold. Rejects unknown keys up front, so that a mistyped
-// key is reported as such rather than as a missing required key (pbrt's ReportUnused habit).
-class TableReader {
+// The shared reader (common/toml_reader.h) plus the vectors and colours of scene files.
+class TableReader : public TomlTableReader {
  public:
-  TableReader(const ErrorReporter& errors, const toml::table& table, std::string name,
-              std::string header, std::vector<std::string> allowed)
-      : errors_(errors), table_(table), name_(std::move(name)), header_(std::move(header)) {
-    for (auto&& [key, node] : table) {
-      if (std::find(allowed.begin(), allowed.end(), key.str()) == allowed.end())
-        errors_.fail(key.source(), fmt::format("unknown key '{}' in {}", key.str(), header_),
-                     fmt::format("allowed keys: {}", joinKeys(allowed)));
-    }
-  }
-
-  // The dotted name of a key, as error messages show it: "camera.position".
-  std::string path(std::string_view key) const {
-    return name_.empty() ? std::string(key) : fmt::format("{}.{}", name_, key);
-  }
-  const toml::table& table() const { return table_; }
-  const ErrorReporter& errors() const { return errors_; }
-
-  const toml::node* find(std::string_view key) const { return table_.get(key); }
-
-  const toml::node& require(std::string_view key, std::string_view example) const {
-    const toml::node* node = find(key);
-    if (!node)
-      errors_.fail(table_, fmt::format("missing key '{}'", path(key)),
-                   fmt::format("add {} = {} to {}", key, example, header_));
-    return *node;
-  }
-
-  double number(const toml::node& node, std::string_view key) const {
-    const double value = numberValue(node);
-    if (!std::isfinite(value))
-      errors_.fail(node, fmt::format("{} must be a finite number", path(key)),
-                   "write a number such as 1.0");
-    return value;
-  }
+  using TomlTableReader::TomlTableReader;
 
   glm::vec3 vec3(const toml::node& node, std::string_view key) const {
     const toml::array* array = node.as_array();
     glm::vec3 v(NAN);
     if (array && array->size() == 3) {
       for (int i = 0; i < 3; ++i)
-        v[i] = static_cast<float>(numberValue(*array->get(static_cast<std::size_t>(i))));
+        v[i] = static_cast<float>(tomlNumber(*array->get(static_cast<std::size_t>(i))));
     }
     if (!isFinite(v))
-      errors_.fail(node, fmt::format("{} must be an array of 3 numbers", path(key)),
-                   "write it as [x, y, z] with finite values");
+      errors().fail(node, fmt::format("{} must be an array of 3 numbers", path(key)),
+                    "write it as [x, y, z] with finite values");
     return v;
   }
 
@@ -120,18 +54,10 @@ class TableReader {
   Rgb rgb(const toml::node& node, std::string_view key) const {
     const glm::vec3 v = vec3(node, key);
     if (v.r < 0 || v.g < 0 || v.b < 0)
-      errors_.fail(
+      errors().fail(
           node, fmt::format("{} must not be negative, got [{}, {}, {}]", path(key), v.r, v.g, v.b),
           "use values >= 0");
     return v;
-  }
-
-  std::string string(const toml::node& node, std::string_view key) const {
-    const auto* s = node.as_string();
-    if (!s || s->get().empty())
-      errors_.fail(node, fmt::format("{} must be a non-empty string", path(key)),
-                   "write it in double quotes, e.g. \"name\"");
-    return s->get();
   }
 
   template <typename Read, typename T>
@@ -139,31 +65,11 @@ class TableReader {
     const toml::node* node = find(key);
     return node ? (this->*read)(*node, key) : fallback;
   }
-
- private:
-  const ErrorReporter& errors_;
-  const toml::table& table_;
-  std::string name_;    // dotted prefix of its keys, "" for the root
-  std::string header_;  // how the file spells the table: "[camera]", "[[meshes]] entry 2"
 };
 
 const toml::table& requireTable(const ErrorReporter& errors, const toml::node& node,
                                 const std::string& name, std::string_view fix) {
-  if (!node.is_table()) errors.fail(node, fmt::format("{} must be a table", name), fix);
-  return *node.as_table();
-}
-
-// Items of an array of tables ([[meshes]], [[lights]]); empty when the key is absent.
-std::vector<const toml::table*> tableArray(const TableReader& root, std::string_view key) {
-  std::vector<const toml::table*> tables;
-  const toml::node* node = root.find(key);
-  if (!node) return tables;
-  const toml::array* array = node->as_array();
-  if (!array || (!array->empty() && !array->is_array_of_tables()))
-    root.errors().fail(*node, fmt::format("{} must be an array of tables", key),
-                       fmt::format("write each entry as a [[{}]] table", key));
-  for (const toml::node& item : *array) tables.push_back(item.as_table());
-  return tables;
+  return requireTomlTable(errors, node, name, fix);
 }
 
 Camera readCamera(const TableReader& root) {
@@ -203,13 +109,7 @@ Camera readCamera(const TableReader& root) {
 
 int readImageSide(const TableReader& t, std::string_view key, int fallback) {
   const toml::node* node = t.find(key);
-  if (!node) return fallback;
-  const auto* value = node->as_integer();
-  if (!value || value->get() < 1 || value->get() > kMaxImageSide)
-    t.errors().fail(*node,
-                    fmt::format("{} must be an integer in [1, {}]", t.path(key), kMaxImageSide),
-                    fmt::format("write e.g. {} = 512", key));
-  return static_cast<int>(value->get());
+  return node ? static_cast<int>(t.integer(*node, key, 1, kMaxImageSide, "512")) : fallback;
 }
 
 // Reads [materials.*] in the order of the file; `indices` maps names to Scene::materials indices.
@@ -219,13 +119,8 @@ std::vector<Material> readMaterials(const TableReader& root,
   if (const toml::node* node = root.find("materials")) {
     const toml::table& table = requireTable(root.errors(), *node, "materials",
                                             "write each material as a [materials.<name>] table");
-    for (auto&& [key, value] : table) entries.emplace_back(&key, &value);
+    entries = entriesInFileOrder(table);
   }
-  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
-    const auto& pa = a.first->source().begin;
-    const auto& pb = b.first->source().begin;
-    return std::pair(pa.line, pa.column) < std::pair(pb.line, pb.column);
-  });
 
   std::vector<Material> materials;
   for (const auto& [key, node] : entries) {
@@ -277,12 +172,6 @@ std::vector<Material> readMaterials(const TableReader& root,
     materials.push_back(std::move(m));
   }
   return materials;
-}
-
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
 }
 
 // The text of the OBJ file at `path`; `where` is the `file` value, for errors.
@@ -457,23 +346,11 @@ void readLight(const TableReader& root, const toml::table& table, std::size_t i,
   }
 }
 
-toml::table parseToml(const ErrorReporter& errors, const fs::path& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw InputError(fmt::format("{}: scene file not found; check the path", errors.file()));
-  try {
-    return toml::parse_file(path.string());
-  } catch (const toml::parse_error& e) {
-    errors.fail(e.source(), fmt::format("invalid TOML: {}", oneLine(std::string(e.description()))),
-                "fix the TOML syntax at this position");
-  }
-}
-
 }  // namespace
 
 Scene loadSceneFile(const std::filesystem::path& toml_path) {
   const ErrorReporter errors(toml_path.string());
-  const toml::table document = parseToml(errors, toml_path);
+  const toml::table document = parseTomlFile(errors, toml_path, "scene file");
   const TableReader root(errors, document, "", "the top level of the scene file",
                          {"name", "camera", "image", "materials", "meshes", "lights", "sky"});
 
@@ -491,14 +368,14 @@ Scene loadSceneFile(const std::filesystem::path& toml_path) {
   std::map<std::string, std::uint32_t> material_indices;
   scene.materials = readMaterials(root, material_indices);
   const fs::path base_dir = fs::absolute(toml_path).parent_path();
-  const std::vector<const toml::table*> meshes = tableArray(root, "meshes");
+  const std::vector<const toml::table*> meshes = tomlTableArray(root, "meshes");
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const TableReader t(errors, *meshes[i], fmt::format("meshes[{}]", i),
                         fmt::format("[[meshes]] entry {}", i + 1),
                         {"file", "material", "translate", "scale", "flip_normals"});
     scene.meshes.push_back(readMesh(t, base_dir, material_indices));
   }
-  const std::vector<const toml::table*> lights = tableArray(root, "lights");
+  const std::vector<const toml::table*> lights = tomlTableArray(root, "lights");
   for (std::size_t i = 0; i < lights.size(); ++i) readLight(root, *lights[i], i, scene);
   if (const toml::node* node = root.find("sky")) {
     const TableReader t(errors, requireTable(errors, *node, "sky", "write [sky]"), "sky", "[sky]",

@@ -1,0 +1,70 @@
+// A suite: the cases a run renders and measures (scene × technique × parameter sweeps), the
+// reference each case is measured against, the metrics and the timing repetitions. Read from a
+// TOML file by suites/suite_file.h, turned into jobs by suites/job_expansion.h. Every value here
+// has been validated against the scene, technique and metric registries.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gib::suites {
+
+// The technique name of a case that renders the reference alone (a convergence series of the
+// path tracer, say).
+inline constexpr const char* kReferenceTechnique = "reference";
+
+// The reference render a job is measured against.
+struct ReferenceSettings {
+  int spp = 1024;
+  unsigned long long seed = 0;
+  // The path class (scene/path_class.h). Absent: the technique's own (Technique::pathClass()),
+  // every path for a reference case. max_bounces may be PathClass::kUnlimited.
+  std::optional<int> min_bounces;
+  std::optional<int> max_bounces;
+
+  bool operator==(const ReferenceSettings&) const = default;
+};
+
+// One parameter of a case: a fixed value, or a sweep over several. Values are canonical
+// (ParameterValues::canonical()): `4`, `4.0` and `4e0` of an integer parameter are all "4".
+struct Sweep {
+  std::string key;
+  std::vector<std::string> values;  // at least one, no two equal
+  bool swept = false;               // written as an array: the value is part of the job id
+};
+
+// What the case renders: a built-in scene or a scene file.
+struct SceneSpec {
+  std::string name;            // the built-in name, or the file's stem
+  std::filesystem::path file;  // absolute path of a scene file; empty for a built-in scene
+  bool builtin() const { return file.empty(); }
+  // What scene::loadScene takes: the built-in name or the file's path.
+  std::string nameOrPath() const { return builtin() ? name : file.string(); }
+};
+
+struct Case {
+  std::string name;  // unique in the suite; default "<scene>-<technique>"
+  int line = 0;      // where the case starts in the suite file, for later messages
+  SceneSpec scene;
+  std::vector<Sweep> scene_parameters;      // `scene_set`, in file order
+  std::string technique;                    // a catalogue name or kReferenceTechnique
+  std::vector<Sweep> technique_parameters;  // `set`, in file order
+  std::optional<int> width, height;         // absent: the scene's default size
+  int frames = 8;                           // measured frames of a technique job
+  int warmup = 2;                           // frames rendered before them
+  std::vector<std::string> metrics;         // metric registry names, catalogue order
+  ReferenceSettings reference;
+  std::vector<int> checkpoints;  // optional series (spp, iterations, …), strictly increasing
+};
+
+struct Suite {
+  std::string name;
+  std::string description;
+  std::filesystem::path file;  // absolute path of the suite file
+  std::vector<Case> cases;     // file order
+};
+
+}  // namespace gib::suites

@@ -1,0 +1,498 @@
+#include "suites/suite_file.h"
+
+#include "common/input_error.h"
+#include "metrics/metric_registry.h"
+#include "realtime/technique.h"
+#include "scene/builtin_scenes.h"
+#include "scene/path_class.h"
+#include "suites/job_expansion.h"
+#include "support/temp_dir.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <string>
+
+namespace gib::suites {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+constexpr const char* kSuite = R"(name = "unit"
+description = "a suite for the tests"
+
+[defaults]
+width = 64
+height = 48
+metrics = ["flip", "relmse"]
+frames = 5
+warmup = 1
+
+[defaults.reference]
+spp = 256
+seed = 7
+
+[[case]]
+scene = "cornell"
+technique = "reference"
+checkpoints = [4, 16, 64]
+
+[[case]]
+name = "direct-sweep"
+scene = "cornell"
+technique = "direct"
+set = { shadow = ["hard", "pcf"], light_samples = 4.0, normal_offset = 1.50 }
+width = 32
+height = 32
+metrics = "all"
+[case.reference]
+spp = 512
+max_bounces = "unlimited"
+)";
+
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+// The 1-based line of the first occurrence of `needle` in `text`.
+int lineOf(const std::string& text, const std::string& needle) {
+  const std::size_t at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+class SuiteFileTest : public ::testing::Test {
+ protected:
+  std::filesystem::path suitePath() const { return dir_ / "suite.toml"; }
+
+  Suite load(const std::string& text) const {
+    writeFile(suitePath(), text);
+    return loadSuiteFile(suitePath());
+  }
+
+  // The message of the InputError that loading `text` throws ("" if none is thrown).
+  std::string errorOf(const std::string& text) const {
+    try {
+      load(text);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no InputError for:\n" << text;
+    return "";
+  }
+
+  // Expects one line "<file>:<line of needle>:<column>: …; …" and returns it.
+  std::string expectErrorAt(const std::string& text, const std::string& needle) const {
+    const std::string message = errorOf(text);
+    EXPECT_THAT(message,
+                StartsWith(suitePath().string() + ":" + std::to_string(lineOf(text, needle)) + ":"))
+        << text;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+    EXPECT_THAT(message, HasSubstr("; ")) << "names a fix: " << message;
+    return message;
+  }
+
+  test::TempDir dir_;
+};
+
+TEST_F(SuiteFileTest, CasesInheritTheDefaults) {
+  const Suite suite = load(kSuite);
+  EXPECT_EQ(suite.name, "unit");
+  EXPECT_EQ(suite.description, "a suite for the tests");
+  EXPECT_EQ(suite.file, std::filesystem::absolute(suitePath()).lexically_normal());
+  ASSERT_EQ(suite.cases.size(), 2u);
+
+  const Case& reference = suite.cases[0];
+  EXPECT_EQ(reference.name, "cornell-reference");  // the default name
+  EXPECT_EQ(reference.line, lineOf(kSuite, "[[case]]"));
+  EXPECT_TRUE(reference.scene.builtin());
+  EXPECT_EQ(reference.scene.name, "cornell");
+  EXPECT_EQ(reference.scene.nameOrPath(), "cornell");
+  EXPECT_EQ(reference.technique, kReferenceTechnique);
+  EXPECT_EQ(reference.width, 64);
+  EXPECT_EQ(reference.height, 48);
+  EXPECT_EQ(reference.frames, 5);
+  EXPECT_EQ(reference.warmup, 1);
+  EXPECT_THAT(reference.metrics, ElementsAre("relmse", "flip"));  // catalogue order
+  EXPECT_EQ(reference.reference.spp, 256);
+  EXPECT_EQ(reference.reference.seed, 7u);
+  EXPECT_FALSE(reference.reference.min_bounces.has_value());
+  EXPECT_FALSE(reference.reference.max_bounces.has_value());
+  EXPECT_THAT(reference.checkpoints, ElementsAre(4, 16, 64));
+  EXPECT_TRUE(reference.technique_parameters.empty());
+}
+
+TEST_F(SuiteFileTest, CasesOverrideTheDefaultsKeyByKey) {
+  const Suite suite = load(kSuite);
+  const Case& direct = suite.cases[1];
+  EXPECT_EQ(direct.name, "direct-sweep");
+  EXPECT_EQ(direct.technique, "direct");
+  EXPECT_EQ(direct.width, 32);
+  EXPECT_EQ(direct.height, 32);
+  EXPECT_EQ(direct.frames, 5);
+  EXPECT_EQ(direct.metrics, metrics::parseMetricList("all"));
+  EXPECT_EQ(direct.reference.spp, 512);
+  EXPECT_EQ(direct.reference.seed, 7u);  // from [defaults.reference]
+  EXPECT_EQ(direct.reference.max_bounces, scene::PathClass::kUnlimited);
+  EXPECT_TRUE(direct.checkpoints.empty());
+}
+
+TEST_F(SuiteFileTest, ParameterValuesAreCanonicalAndInFileOrder) {
+  const Suite suite = load(kSuite);
+  const std::vector<Sweep>& set = suite.cases[1].technique_parameters;
+  ASSERT_EQ(set.size(), 3u);
+  // toml++ sorts keys; the suite keeps the order of the file.
+  EXPECT_EQ(set[0].key, "shadow");
+  EXPECT_TRUE(set[0].swept);
+  EXPECT_THAT(set[0].values, ElementsAre("hard", "pcf"));
+  EXPECT_EQ(set[1].key, "light_samples");
+  EXPECT_FALSE(set[1].swept);
+  EXPECT_THAT(set[1].values, ElementsAre("4"));  // written 4.0
+  EXPECT_EQ(set[2].key, "normal_offset");
+  EXPECT_THAT(set[2].values, ElementsAre("1.5"));  // written 1.50
+}
+
+TEST_F(SuiteFileTest, WithoutDefaultsTheBuiltInDefaultsApply) {
+  const Suite suite =
+      load("name = \"bare\"\n[[case]]\nscene = \"furnace\"\ntechnique = \"direct\"\n");
+  ASSERT_EQ(suite.cases.size(), 1u);
+  const Case& c = suite.cases[0];
+  EXPECT_EQ(c.name, "furnace-direct");
+  EXPECT_FALSE(c.width.has_value());  // the scene's own size
+  EXPECT_FALSE(c.height.has_value());
+  EXPECT_EQ(c.frames, 8);
+  EXPECT_EQ(c.warmup, 2);
+  EXPECT_EQ(c.metrics, metrics::parseMetricList("all"));
+  EXPECT_EQ(c.reference, ReferenceSettings{});
+  EXPECT_TRUE(c.technique_parameters.empty());
+}
+
+TEST_F(SuiteFileTest, SceneParametersIncludingVectors) {
+  const Suite suite = load(R"(name = "vectors"
+[[case]]
+scene = "chamber"
+scene_set = { detail = [1, 2], light_target = [-1, 0, 5], light_position = ["0,4,3", [1.0, 4, 3]] }
+technique = "direct"
+[case.reference]
+min_bounces = 1
+max_bounces = 1
+)");
+  const Case& c = suite.cases[0];
+  ASSERT_EQ(c.scene_parameters.size(), 3u);
+  EXPECT_EQ(c.scene_parameters[0].key, "detail");
+  EXPECT_THAT(c.scene_parameters[0].values, ElementsAre("1", "2"));
+  EXPECT_EQ(c.scene_parameters[1].key, "light_target");
+  EXPECT_FALSE(c.scene_parameters[1].swept);  // three numbers are one vector, not a sweep
+  EXPECT_THAT(c.scene_parameters[1].values, ElementsAre("-1,0,5"));
+  EXPECT_EQ(c.scene_parameters[2].key, "light_position");
+  EXPECT_TRUE(c.scene_parameters[2].swept);
+  EXPECT_THAT(c.scene_parameters[2].values, ElementsAre("0,4,3", "1,4,3"));
+  EXPECT_EQ(c.reference.min_bounces, 1);
+  EXPECT_EQ(c.reference.max_bounces, 1);
+}
+
+TEST_F(SuiteFileTest, RelativeScenePathsStartAtTheSuiteFilesFolder) {
+  writeFile(dir_ / "scenes" / "room.toml", "# not read while parsing the suite\n");
+  writeFile(dir_ / "sub" / "suite.toml", R"(name = "files"
+[[case]]
+scene = "../scenes/room.toml"
+technique = "direct"
+)");
+  const Suite suite = loadSuiteFile(dir_ / "sub" / "suite.toml");
+  const SceneSpec& scene = suite.cases[0].scene;
+  EXPECT_FALSE(scene.builtin());
+  EXPECT_EQ(scene.file,
+            std::filesystem::absolute(dir_ / "scenes" / "room.toml").lexically_normal());
+  EXPECT_EQ(scene.nameOrPath(), scene.file.string());
+  EXPECT_EQ(scene.name, "room");
+  EXPECT_EQ(suite.cases[0].name, "room-direct");
+}
+
+TEST_F(SuiteFileTest, MissingFile) {
+  try {
+    loadSuiteFile(dir_ / "nowhere.toml");
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (dir_ / "nowhere.toml").string() + ": suite file not found; check the path");
+  }
+}
+
+TEST_F(SuiteFileTest, MalformedToml) {
+  const std::string text = replaced(kSuite, "frames = 5", "frames = = 5");
+  EXPECT_THAT(expectErrorAt(text, "frames = = 5"), HasSubstr("invalid TOML"));
+}
+
+TEST_F(SuiteFileTest, UnknownKeysListTheAllowedOnes) {
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "description =", "descripton ="), "descripton"),
+              HasSubstr("unknown key 'descripton' in the top level of the suite file; allowed "
+                        "keys: name, description, defaults, case"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "warmup = 1", "warm_up = 1"), "warm_up"),
+              HasSubstr("unknown key 'warm_up' in [defaults]"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "seed = 7", "sed = 7"), "sed = 7"),
+              HasSubstr("unknown key 'sed' in [defaults.reference]; allowed keys: spp, seed, "
+                        "min_bounces, max_bounces"));
+  EXPECT_THAT(
+      expectErrorAt(replaced(kSuite, "checkpoints = [4", "checkpoint = [4"), "checkpoint = [4"),
+      HasSubstr("unknown key 'checkpoint' in [[case]] entry 1; allowed keys: name, scene, "
+                "scene_set, technique, set, checkpoints, width"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "[[case]]", "[[cases]]"), "[[cases]]"),
+              HasSubstr("unknown key 'cases'"));
+}
+
+TEST_F(SuiteFileTest, UnknownSceneListsTheBuiltInScenes) {
+  const std::string text = replaced(kSuite, "scene = \"cornell\"", "scene = \"cornel\"");
+  EXPECT_THAT(expectErrorAt(text, "scene = \"cornel\""),
+              HasSubstr("unknown scene 'cornel'; use a built-in scene (cornell, furnace, chamber, "
+                        "cloud"));
+}
+
+TEST_F(SuiteFileTest, MissingSceneFile) {
+  const std::string text = replaced(kSuite, "scene = \"cornell\"", "scene = \"rooms/room.toml\"");
+  const std::string message = expectErrorAt(text, "rooms/room.toml");
+  EXPECT_THAT(message, HasSubstr((dir_ / "rooms" / "room.toml").string() + "' not found"));
+  EXPECT_THAT(message, HasSubstr("suite file's folder"));
+}
+
+TEST_F(SuiteFileTest, UnknownTechniqueListsTheCatalogue) {
+  const std::string text = replaced(kSuite, "technique = \"direct\"", "technique = \"drect\"");
+  EXPECT_THAT(expectErrorAt(text, "technique = \"drect\""),
+              HasSubstr("unknown technique 'drect'; available: reference, direct"));
+}
+
+TEST_F(SuiteFileTest, UnknownTechniqueParameterListsTheKnownOnes) {
+  const std::string text = replaced(kSuite, "normal_offset = 1.50", "normal_ofset = 1.50");
+  EXPECT_THAT(expectErrorAt(text, "normal_ofset"),
+              HasSubstr("technique 'direct' has no parameter 'normal_ofset'; its parameters are "
+                        "shadow, shadow_map_size"));
+}
+
+TEST_F(SuiteFileTest, ParameterValuesAreCheckedOneByOne) {
+  // The position is that of the offending value, also inside a sweep spread over lines.
+  const std::string sweep =
+      replaced(kSuite, "shadow = [\"hard\", \"pcf\"]", "shadow = [\n  \"hard\",\n  \"soft\",\n]");
+  EXPECT_THAT(expectErrorAt(sweep, "\"soft\""),
+              HasSubstr("technique 'direct' parameter 'shadow' = 'soft' is not one of the "
+                        "choices; give a choice in hard|pcf|vsm"));
+  const std::string range = replaced(kSuite, "light_samples = 4.0", "light_samples = 0");
+  EXPECT_THAT(expectErrorAt(range, "light_samples = 0"), HasSubstr("is out of range"));
+  const std::string fraction = replaced(kSuite, "light_samples = 4.0", "light_samples = 4.5");
+  EXPECT_THAT(expectErrorAt(fraction, "light_samples = 4.5"), HasSubstr("is not an integer"));
+  const std::string table = replaced(kSuite, "light_samples = 4.0", "light_samples = { n = 4 }");
+  EXPECT_THAT(expectErrorAt(table, "light_samples ="),
+              HasSubstr("set.light_samples must be a string or a finite number"));
+}
+
+TEST_F(SuiteFileTest, SceneParametersAreChecked) {
+  const std::string none = replaced(kSuite, "technique = \"reference\"",
+                                    "technique = \"reference\"\nscene_set = { detail = 2 }");
+  EXPECT_THAT(expectErrorAt(none, "detail = 2"),
+              HasSubstr("scene 'cornell' has no parameter 'detail'; it takes none"));
+  const std::string chamber = replaced(
+      replaced(kSuite, "scene = \"cornell\"", "scene = \"chamber\""), "technique = \"reference\"",
+      "technique = \"reference\"\nscene_set = { detail = 9 }");
+  EXPECT_THAT(expectErrorAt(chamber, "detail = 9"),
+              HasSubstr("scene 'chamber' parameter 'detail' = '9' is out of range"));
+  const std::string vector = replaced(chamber, "detail = 9", "light_target = [1, 2]");
+  EXPECT_THAT(expectErrorAt(vector, "light_target"),
+              HasSubstr("case.scene_set.light_target must be [x, y, z] or \"x,y,z\""));
+  const std::string text = replaced(chamber, "detail = 9", "light_target = \"1,2\"");
+  EXPECT_THAT(expectErrorAt(text, "light_target"), HasSubstr("does not have three components"));
+  const std::string range =
+      replaced(chamber, "detail = 9", "light_target = [[0, 0, 1], [0, 0, 1e9]]");
+  EXPECT_THAT(expectErrorAt(range, "light_target"), HasSubstr("has a component out of range"));
+}
+
+TEST_F(SuiteFileTest, SweepsMustListDistinctValues) {
+  const std::string empty = replaced(kSuite, "shadow = [\"hard\", \"pcf\"]", "shadow = []");
+  EXPECT_THAT(expectErrorAt(empty, "shadow = []"),
+              HasSubstr("set.shadow is an empty sweep; list at least one value"));
+  const std::string twice = replaced(kSuite, "light_samples = 4.0", "light_samples = [4, 4.0]");
+  EXPECT_THAT(expectErrorAt(twice, "light_samples = [4, 4.0]"),
+              HasSubstr("set.light_samples lists the value 4 twice"));
+}
+
+TEST_F(SuiteFileTest, HugeSweepsAreRefused) {
+  std::string values;
+  for (int i = 1; i <= 4096; ++i) {
+    if (i > 1) values += ',';
+    values += std::to_string(i);
+  }
+  const std::string text =
+      replaced(replaced(kSuite, "light_samples = 4.0", "light_samples = [" + values + "]"),
+               "\"pcf\"]", "\"pcf\", \"vsm\"]");
+  // Reported at the case's [[case]] line, the one before its name.
+  const std::string message = errorOf(text);
+  EXPECT_THAT(message,
+              StartsWith(suitePath().string() + ":" +
+                         std::to_string(lineOf(text, "name = \"direct-sweep\"") - 1) + ":"));
+  EXPECT_THAT(message, HasSubstr("case 'direct-sweep' expands into 12288 jobs, more than 10000"));
+}
+
+TEST_F(SuiteFileTest, UnknownMetricListsTheKnownOnes) {
+  const std::string text =
+      replaced(kSuite, "metrics = [\"flip\", \"relmse\"]", "metrics = [\"flip\", \"relmsee\"]");
+  const std::string message = expectErrorAt(text, "metrics = [");
+  EXPECT_THAT(message, HasSubstr("unknown metric 'relmsee'; choose 'all' or a comma-separated "
+                                 "list of: mse"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "metrics = \"all\"", "metrics = []"), "metrics = []"),
+              HasSubstr("case.metrics must not be empty"));
+  EXPECT_THAT(
+      load(replaced(kSuite, "metrics = \"all\"", "metrics = \"ssim,mse\"")).cases[1].metrics,
+      ElementsAre("mse", "ssim"));
+}
+
+TEST_F(SuiteFileTest, SizesAndCountsMustBePositive) {
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "width = 64", "width = 0"), "width = 0"),
+              HasSubstr("defaults.width must be an integer in [1, 32768]"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "height = 32", "height = -32"), "height = -32"),
+              HasSubstr("case.height must be an integer in [1, 32768]"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "width = 32", "width = 32.0"), "width = 32.0"),
+              HasSubstr("case.width must be an integer"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "frames = 5", "frames = 0"), "frames = 0"),
+              HasSubstr("defaults.frames must be an integer in [1, "));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "warmup = 1", "warmup = -1"), "warmup = -1"),
+              HasSubstr("defaults.warmup must be an integer in [0, "));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "spp = 256", "spp = 0"), "spp = 0"),
+              HasSubstr("defaults.reference.spp must be an integer in [1, "));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "spp = 512", "spp = \"many\""), "spp = \"many\""),
+              HasSubstr("case.reference.spp must be an integer"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "seed = 7", "seed = -7"), "seed = -7"),
+              HasSubstr("defaults.reference.seed must be an integer in [0, "));
+}
+
+TEST_F(SuiteFileTest, WidthNeedsHeight) {
+  // Reported where the lone width is given, here in [defaults].
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "height = 48\n", ""), "width = 64"),
+              HasSubstr("width is given without height; give both width and height"));
+  // A case may override one of the two.
+  const Suite suite = load(replaced(kSuite, "width = 32\n", ""));
+  EXPECT_EQ(suite.cases[1].width, 64);
+  EXPECT_EQ(suite.cases[1].height, 32);
+}
+
+TEST_F(SuiteFileTest, BounceLimits) {
+  const std::string text =
+      replaced(kSuite, "max_bounces = \"unlimited\"", "min_bounces = 2\nmax_bounces = 1");
+  EXPECT_THAT(expectErrorAt(text, "min_bounces = 2"),
+              HasSubstr("reference min_bounces 2 is above max_bounces 1"));
+  const std::string word = replaced(kSuite, "max_bounces = \"unlimited\"", "max_bounces = \"all\"");
+  EXPECT_THAT(expectErrorAt(word, "max_bounces = \"all\""),
+              HasSubstr("case.reference.max_bounces must be an integer in [0, 1000000] or "
+                        "\"unlimited\""));
+}
+
+TEST_F(SuiteFileTest, DuplicateCaseNames) {
+  const std::string text =
+      replaced(kSuite, "name = \"direct-sweep\"", "name = \"cornell-reference\"");
+  EXPECT_THAT(expectErrorAt(text, "name = \"cornell-reference\""),
+              HasSubstr("case name 'cornell-reference' is also the name of the case at line 15; "
+                        "give each case its own name"));
+  // Two cases that take the default name: at the second one's [[case]] line, after kSuite.
+  const std::string defaults =
+      std::string(kSuite) + "[[case]]\nscene = \"cornell\"\ntechnique = \"reference\"\n";
+  const std::string message = errorOf(defaults);
+  EXPECT_THAT(message, StartsWith(suitePath().string() + ":" +
+                                  std::to_string(lineOf(kSuite, "max_bounces") + 1) + ":"));
+  EXPECT_THAT(message, HasSubstr("is also the name of the case at line 15; give the case a name"));
+}
+
+TEST_F(SuiteFileTest, BadNames) {
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "name = \"unit\"", "name = \"my suite\""), "my suite"),
+              HasSubstr("suite name 'my suite' has characters other than letters"));
+  EXPECT_THAT(
+      expectErrorAt(replaced(kSuite, "name = \"direct-sweep\"", "name = \"a/b\""), "\"a/b\""),
+      HasSubstr("case name 'a/b' has characters other than letters"));
+}
+
+TEST_F(SuiteFileTest, MissingKeysPointAtTheirTable) {
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "name = \"unit\"\n", ""), "description"),
+              HasSubstr("missing key 'name'; add name = \"smoke\" to the top level"));
+  const std::string no_scene = replaced(kSuite, "scene = \"cornell\"\ntechnique = \"reference\"",
+                                        "technique = \"reference\"");
+  EXPECT_THAT(expectErrorAt(no_scene, "[[case]]"),
+              HasSubstr("missing key 'case.scene'; add scene = \"cornell\" to [[case]] entry 1"));
+  const std::string no_technique = replaced(kSuite, "technique = \"reference\"\n", "");
+  EXPECT_THAT(expectErrorAt(no_technique, "[[case]]"), HasSubstr("missing key 'case.technique'"));
+}
+
+TEST_F(SuiteFileTest, ASuiteNeedsCases) {
+  const std::string text = "name = \"empty\"\n[defaults]\nframes = 3\n";
+  EXPECT_THAT(expectErrorAt(text, "name"), HasSubstr("the suite has no cases; add a [[case]]"));
+  EXPECT_THAT(expectErrorAt("name = \"x\"\n[case]\nscene = \"cornell\"\n", "[case]"),
+              HasSubstr("case must be an array of tables; write each entry as a [[case]] table"));
+}
+
+TEST_F(SuiteFileTest, WhatAReferenceCaseCannotTake) {
+  const std::string set = replaced(kSuite, "technique = \"reference\"",
+                                   "technique = \"reference\"\nset = { shadow = \"pcf\" }");
+  EXPECT_THAT(expectErrorAt(set, "set = { shadow"), HasSubstr("a reference case takes no set"));
+  const std::string checkpoints = replaced(kSuite, "[4, 16, 64]", "[4, 16, 64, 512]");
+  EXPECT_THAT(expectErrorAt(checkpoints, "[4, 16, 64, 512]"),
+              HasSubstr("checkpoint 512 is above the reference's 256 spp"));
+}
+
+TEST_F(SuiteFileTest, CheckpointsIncrease) {
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "[4, 16, 64]", "[4, 4]"), "[4, 4]"),
+              HasSubstr("case.checkpoints must be strictly increasing"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "[4, 16, 64]", "[0, 4]"), "[0, 4]"),
+              HasSubstr("case.checkpoints must hold positive integers"));
+  EXPECT_THAT(expectErrorAt(replaced(kSuite, "[4, 16, 64]", "[]"), "checkpoints = []"),
+              HasSubstr("case.checkpoints must be a non-empty array"));
+}
+
+TEST_F(SuiteFileTest, SceneFileTakesNoSceneSet) {
+  writeFile(dir_ / "room.toml", "");
+  const std::string text =
+      replaced(kSuite, "scene = \"cornell\"\ntechnique = \"reference\"",
+               "scene = \"room.toml\"\nscene_set = { detail = 2 }\ntechnique = \"reference\"");
+  EXPECT_THAT(expectErrorAt(text, "scene_set"), HasSubstr("a scene file takes no scene_set"));
+}
+
+// The suites of the repository parse, and the nightly suite keeps up with the registries.
+std::filesystem::path repositorySuite(const char* name) {
+  return std::filesystem::path(GIB_SOURCE_DIR) / "suites" / name;
+}
+
+TEST(RepositorySuites, SmokeSuiteParses) {
+  const Suite suite = loadSuiteFile(repositorySuite("smoke.toml"));
+  EXPECT_EQ(suite.name, "smoke");
+  const std::vector<Job> jobs = expandSuite(suite);
+  std::vector<std::string> ids;
+  for (const Job& job : jobs) {
+    ids.push_back(job.id);
+    EXPECT_EQ(job.scene.name, "cornell");
+    EXPECT_LE(*job.width * *job.height * static_cast<long long>(job.reference.spp), 1LL << 25)
+        << "keep the smoke suite quick";
+  }
+  EXPECT_THAT(ids, ElementsAre("cornell-reference", "cornell-direct/shadow=hard",
+                               "cornell-direct/shadow=pcf", "cornell-direct/shadow=vsm"));
+}
+
+TEST(RepositorySuites, NightlySuiteCoversEverySceneAndTechnique) {
+  const Suite suite = loadSuiteFile(repositorySuite("nightly.toml"));
+  EXPECT_EQ(suite.name, "nightly");
+  std::set<std::pair<std::string, std::string>> covered;
+  for (const Job& job : expandSuite(suite)) covered.emplace(job.scene.name, job.technique);
+  std::vector<std::string> techniques = {kReferenceTechnique};
+  for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) techniques.push_back(info.name);
+  for (const scene::BuiltinSceneInfo& scene : scene::builtinScenes())
+    for (const std::string& technique : techniques)
+      EXPECT_TRUE(covered.count({scene.name, technique}))
+          << "suites/nightly.toml has no case for " << scene.name << " x " << technique;
+}
+
+}  // namespace
+}  // namespace gib::suites
