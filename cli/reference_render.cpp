@@ -20,7 +20,7 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
     throw InputError(fmt::format(
         "{} applies to real-time techniques, not the reference; the reference takes --spp, "
         "--seed, --min-bounces, --max-bounces",
-        joinNames(foreign, ", ", [](const std::string& s) { return s; })));
+        joinNames(foreign, ", ")));
   if (o.spp <= 0)
     throw InputError(
         fmt::format("--spp {} renders nothing; give at least 1 sample per pixel", o.spp));

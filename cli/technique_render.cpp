@@ -37,7 +37,7 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
     throw InputError(fmt::format(
         "{} applies to the reference path tracer; technique '{}' takes --set key=value (see "
         "`gibench list techniques`)",
-        joinNames(foreign, ", ", [](const std::string& s) { return s; }), info.name));
+        joinNames(foreign, ", "), info.name));
   const ParameterValues parameters =
       parseParameters(info.parameters, o.set, fmt::format("technique '{}'", info.name));
   const std::filesystem::path out(o.out);

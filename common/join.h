@@ -17,4 +17,11 @@ std::string joinNames(const Range& range, std::string_view separator, Projection
   return joined;
 }
 
+// Joins strings with `separator`.
+template <typename Range>
+std::string joinNames(const Range& range, std::string_view separator) {
+  return joinNames(
+      range, separator, [](const auto& name) -> const auto& { return name; });
+}
+
 }  // namespace gib

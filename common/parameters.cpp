@@ -30,7 +30,7 @@ const char* typeName(ParameterType type) {
 
 std::string rangeText(const ParameterSpec& spec) {
   if (spec.type == ParameterType::kChoice) {
-    return joinNames(spec.choices, "|", [](const std::string& c) { return c; });
+    return joinNames(spec.choices, "|");
   }
   return fmt::format("[{}, {}]{}{}", spec.min, spec.max, spec.unit.empty() ? "" : " ", spec.unit);
 }

@@ -51,7 +51,7 @@ std::string oneLine(std::string text) {
 }
 
 std::string joinKeys(const std::vector<std::string>& keys) {
-  return joinNames(keys, ", ", [](const std::string& key) { return key; });
+  return joinNames(keys, ", ");
 }
 
 std::vector<std::pair<const toml::key*, const toml::node*>> entriesInFileOrder(

@@ -105,6 +105,20 @@ std::vector<GpuMaterial> gpuMaterials(const scene::Scene& scene) {
   return materials;
 }
 
+CameraBlock cameraBlock(const CameraTransform& camera, int width, int height) {
+  CameraBlock block;
+  block.view_projection = camera.projection * camera.view;
+  block.view = camera.view;
+  block.projection = camera.projection;
+  block.position = glm::vec4(camera.position, 1.0f);
+  block.near_far = glm::vec4(camera.near_plane, camera.far_plane, 0.0f, 0.0f);
+  block.image_size =
+      glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+  return block;
+}
+
+}  // namespace
+
 std::vector<EmitterTriangle> emitterTriangles(const scene::Scene& scene) {
   std::vector<EmitterTriangle> emitters;
   for (const scene::Mesh& mesh : scene.meshes) {
@@ -120,20 +134,6 @@ std::vector<EmitterTriangle> emitterTriangles(const scene::Scene& scene) {
   }
   return emitters;
 }
-
-CameraBlock cameraBlock(const CameraTransform& camera, int width, int height) {
-  CameraBlock block;
-  block.view_projection = camera.projection * camera.view;
-  block.view = camera.view;
-  block.projection = camera.projection;
-  block.position = glm::vec4(camera.position, 1.0f);
-  block.near_far = glm::vec4(camera.near_plane, camera.far_plane, 0.0f, 0.0f);
-  block.image_size =
-      glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
-  return block;
-}
-
-}  // namespace
 
 CameraTransform cameraTransform(const scene::Camera& camera, int width, int height,
                                 const glm::vec3& bounds_min, const glm::vec3& bounds_max) {

@@ -40,6 +40,9 @@ struct EmitterTriangle {
   scene::Rgb emission;  // radiance
 };
 
+// The scene's emissive triangles in world space (degenerate ones, which emit nothing, left out).
+std::vector<EmitterTriangle> emitterTriangles(const scene::Scene& scene);
+
 class GpuScene {
  public:
   // Uploads geometry and materials and sets the camera for a width × height image.

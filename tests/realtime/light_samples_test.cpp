@@ -4,33 +4,13 @@
 
 #include "scene/builtin_scenes.h"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <numbers>
 
 namespace gib::rt {
 namespace {
-
-std::vector<EmitterTriangle> emittersOf(const scene::Scene& scene) {
-  std::vector<EmitterTriangle> out;
-  for (const scene::Mesh& mesh : scene.meshes) {
-    const scene::Material& material = scene.materials[mesh.material];
-    if (!material.isEmissive()) continue;
-    for (const glm::uvec3& t : mesh.triangles) {
-      EmitterTriangle e;
-      e.a = mesh.positions[t.x];
-      e.b = mesh.positions[t.y];
-      e.c = mesh.positions[t.z];
-      const glm::vec3 cross = glm::cross(e.b - e.a, e.c - e.a);
-      e.normal = glm::normalize(cross);
-      e.area = 0.5f * glm::length(cross);
-      e.emission = material.emission;
-      out.push_back(e);
-    }
-  }
-  return out;
-}
 
 TEST(Hammersley, FirstCoordinateIsStratifiedSecondIsTheRadicalInverse) {
   EXPECT_FLOAT_EQ(hammersley(0, 4).x, 0.125f);
@@ -44,7 +24,7 @@ TEST(Hammersley, FirstCoordinateIsStratifiedSecondIsTheRadicalInverse) {
 
 TEST(LightSamples, CornellLightSamplesCarryItsWholePowerAndLieOnIt) {
   const scene::Scene scene = scene::loadScene("cornell", {});
-  const std::vector<EmitterTriangle> emitters = emittersOf(scene);
+  const std::vector<EmitterTriangle> emitters = emitterTriangles(scene);
   ASSERT_EQ(emitters.size(), 2u);
   for (int count : {1, 2, 16, 64}) {
     const float lift = 0.5f;
