@@ -45,6 +45,8 @@ void DirectTechnique::prepare(const GpuScene& scene, int width, int height) {
   };
   shade_point_ = shade(LightSampleKind::kPoint);
   shade_directional_ = shade(LightSampleKind::kDirectional);
+  shadow_maps_->setLookupConstants(shade_point_);
+  shadow_maps_->setLookupConstants(shade_directional_);
   glProgramUniform3fv(emission_.id(), emission_.uniform("u_sky_radiance"), 1,
                       glm::value_ptr(scene.scene().sky_radiance));
 }

@@ -22,6 +22,10 @@ constexpr glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
                                   {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
 // Largest angle between a 90° face's axis and a direction it covers (to its corners).
 const float kFaceHalfDiagonal = std::acos(1.0f / std::sqrt(3.0f));
+// What a cleared map holds: nothing closer than the far plane (depth), or for a variance shadow
+// map moments far beyond any scaled light distance.
+constexpr float kFarDepth = 1.0f;
+constexpr float kFarMoments[4] = {1e4f, 1e8f, 0, 0};
 
 std::string kindDefines(LightSampleKind kind, bool variance) {
   std::string d = kind == LightSampleKind::kPoint ? "#define POINT_LIGHT 1\n" : "";
@@ -49,20 +53,22 @@ ShadowMaps::ShadowMaps(const ShadowSettings& settings, const GpuScene& scene)
   const bool variance = settings.filter == ShadowFilter::kVariance;
   const std::string point_defines = kindDefines(LightSampleKind::kPoint, variance);
   const std::string flat_defines = kindDefines(LightSampleKind::kDirectional, variance);
-  depth_point_ = gl::buildProgram({{GL_VERTEX_SHADER, "techniques/direct/shadow.vert.glsl"},
-                                   {GL_FRAGMENT_SHADER, "techniques/direct/shadow.frag.glsl"}},
-                                  point_defines);
-  depth_flat_ = gl::buildProgram({{GL_VERTEX_SHADER, "techniques/direct/shadow.vert.glsl"},
-                                  {GL_FRAGMENT_SHADER, "techniques/direct/shadow.frag.glsl"}},
-                                 flat_defines);
+  auto depthProgram = [](const std::string& defines) {
+    return gl::buildProgram({{GL_VERTEX_SHADER, "techniques/direct/shadow.vert.glsl"},
+                             {GL_FRAGMENT_SHADER, "techniques/direct/shadow.frag.glsl"}},
+                            defines);
+  };
+  auto blurProgram = [](const std::string& defines) {
+    return gl::buildProgram({{GL_COMPUTE_SHADER, "techniques/direct/vsm_blur.comp.glsl"}}, defines);
+  };
+  depth_point_ = depthProgram(point_defines);
+  depth_flat_ = depthProgram(flat_defines);
   const int n = settings.size;
   cube_depth_ = gl::Texture::makeCube(GL_DEPTH_COMPONENT32F, n);
   flat_depth_ = gl::Texture::make2D(GL_DEPTH_COMPONENT32F, n, n);
   if (variance) {
-    blur_point_ = gl::buildProgram({{GL_COMPUTE_SHADER, "techniques/direct/vsm_blur.comp.glsl"}},
-                                   point_defines);
-    blur_flat_ = gl::buildProgram({{GL_COMPUTE_SHADER, "techniques/direct/vsm_blur.comp.glsl"}},
-                                  flat_defines);
+    blur_point_ = blurProgram(point_defines);
+    blur_flat_ = blurProgram(flat_defines);
     cube_moments_ = gl::Texture::makeCube(GL_RG32F, n);
     cube_scratch_ = gl::Texture::makeCube(GL_RG32F, n);
     flat_moments_ = gl::Texture::make2D(GL_RG32F, n, n);
@@ -116,9 +122,13 @@ void ShadowMaps::render(const GpuScene& scene, const LightSample& sample,
   if (settings_.filter == ShadowFilter::kVariance) blur(sample.kind, profiler);
 }
 
+void ShadowMaps::clear(const gl::Framebuffer& framebuffer) const {
+  glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &kFarDepth);
+  if (settings_.filter == ShadowFilter::kVariance)
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, kFarMoments);
+}
+
 void ShadowMaps::renderCube(const GpuScene& scene, const LightSample& sample) {
-  const float far_moments[4] = {1e4f, 1e8f, 0, 0};  // "nothing closer than far" for a VSM
-  const float far_depth = 1.0f;
   const float cone = std::acos(std::clamp(sample.cos_cone, -1.0f, 1.0f));
   const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, near_, far_);
   depth_point_.use();
@@ -126,9 +136,7 @@ void ShadowMaps::renderCube(const GpuScene& scene, const LightSample& sample) {
   glUniform1f(depth_point_.uniform("u_far"), far_);
   for (int face = 0; face < 6; ++face) {
     const gl::Framebuffer& fb = cube_faces_[std::size_t(face)];
-    glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &far_depth);
-    if (settings_.filter == ShadowFilter::kVariance)
-      glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, far_moments);
+    clear(fb);
     const glm::vec3 axis = kFaceAxis[face];
     const float angle = std::acos(std::clamp(glm::dot(axis, sample.axis), -1.0f, 1.0f));
     if (angle >= cone + kFaceHalfDiagonal) continue;  // the sample sends no light this way
@@ -142,11 +150,7 @@ void ShadowMaps::renderCube(const GpuScene& scene, const LightSample& sample) {
 }
 
 void ShadowMaps::renderFlat(const GpuScene& scene, const LightSample& sample) {
-  const float far_moments[4] = {1e4f, 1e8f, 0, 0};
-  const float far_depth = 1.0f;
-  glClearNamedFramebufferfv(flat_.id(), GL_DEPTH, 0, &far_depth);
-  if (settings_.filter == ShadowFilter::kVariance)
-    glClearNamedFramebufferfv(flat_.id(), GL_COLOR, 0, far_moments);
+  clear(flat_);
   flat_.bind();
   const glm::mat4 view_projection = flatViewProjection(sample);
   depth_flat_.use();
@@ -181,10 +185,25 @@ void ShadowMaps::blur(LightSampleKind kind, gl::PassProfiler& profiler) {
   }
 }
 
+void ShadowMaps::setLookupConstants(const gl::Program& program) const {
+  auto set1f = [&](const char* name, float value) {
+    glProgramUniform1f(program.id(), program.uniform(name), value);
+  };
+  auto set1i = [&](const char* name, int value) {
+    glProgramUniform1i(program.id(), program.uniform(name), value);
+  };
+  set1f("u_near", near_);
+  set1f("u_far", far_);
+  set1i("u_shadow_map_size", settings_.size);
+  set1f("u_ortho_extent", 2.0f * radius_);
+  set1f("u_normal_offset", settings_.normal_offset);
+  set1i("u_pcf_radius", settings_.filter == ShadowFilter::kPcf ? settings_.pcf_radius : 0);
+  set1f("u_min_variance", settings_.min_variance);
+}
+
 void ShadowMaps::bindForLookup(const gl::Program& program, const LightSample& sample) const {
   const bool cube = sample.kind == LightSampleKind::kPoint;
-  const bool variance = settings_.filter == ShadowFilter::kVariance;
-  if (variance)
+  if (settings_.filter == ShadowFilter::kVariance)
     (cube ? cube_moments_ : flat_moments_).bind(2);
   else
     (cube ? cube_depth_ : flat_depth_).bind(2);
@@ -195,14 +214,6 @@ void ShadowMaps::bindForLookup(const gl::Program& program, const LightSample& sa
                       glm::value_ptr(sample.axis));
   glProgramUniformMatrix4fv(program.id(), program.uniform("u_light_view_projection"), 1, GL_FALSE,
                             glm::value_ptr(view_projection));
-  glProgramUniform1f(program.id(), program.uniform("u_near"), near_);
-  glProgramUniform1f(program.id(), program.uniform("u_far"), far_);
-  glProgramUniform1i(program.id(), program.uniform("u_shadow_map_size"), settings_.size);
-  glProgramUniform1f(program.id(), program.uniform("u_ortho_extent"), 2.0f * radius_);
-  glProgramUniform1f(program.id(), program.uniform("u_normal_offset"), settings_.normal_offset);
-  glProgramUniform1i(program.id(), program.uniform("u_pcf_radius"),
-                     settings_.filter == ShadowFilter::kPcf ? settings_.pcf_radius : 0);
-  glProgramUniform1f(program.id(), program.uniform("u_min_variance"), settings_.min_variance);
 }
 
 }  // namespace gib::rt

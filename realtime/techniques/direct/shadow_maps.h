@@ -34,14 +34,18 @@ class ShadowMaps {
 
   // Renders the map of `sample` (inside the caller's profiler passes).
   void render(const GpuScene& scene, const LightSample& sample, gl::PassProfiler& profiler);
-  // Binds the map to texture unit 2 and sets the lookup uniforms (shadow_lookup.glsl) of
-  // `program`, which must be the variant for the sample's kind.
+  // Sets the lookup uniforms of shadow_lookup.glsl that are the same for every sample (planes,
+  // size, offsets, filter settings) in `program`; once, when the program is built.
+  void setLookupConstants(const gl::Program& program) const;
+  // Binds the map to texture unit 2 and sets the sample's own lookup uniforms (position, axis,
+  // projection) of `program`, which must be the variant for the sample's kind.
   void bindForLookup(const gl::Program& program, const LightSample& sample) const;
 
   // The GLSL defines of this filter, for programs that read the map.
   std::string defines(LightSampleKind kind) const;
 
  private:
+  void clear(const gl::Framebuffer& framebuffer) const;
   void renderCube(const GpuScene& scene, const LightSample& sample);
   void renderFlat(const GpuScene& scene, const LightSample& sample);
   void blur(LightSampleKind kind, gl::PassProfiler& profiler);
