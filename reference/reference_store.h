@@ -1,0 +1,118 @@
+// The reference store: reference renders kept on disk, content-addressed, so a reference is
+// rendered once and reused by every later run that needs the same image. The key is the hash of
+// the canonical scene (scene::hashScene), the render settings that change the image (size, spp,
+// seed, path class) and the reference renderer's version (a hash of its sources made at build
+// time), so changing any of them makes a new key rather than a stale hit.
+//
+// Layout under the root (default $GIBENCH_STORE, else $XDG_CACHE_HOME/gibench, else
+// ~/.cache/gibench; `--store DIR` chooses another, a network disk say):
+//   <root>/references/<key>/reference.exr   mean (RGB) + variance, direct, indirect layers
+//   <root>/references/<key>/reference.png   for looking at
+//   <root>/references/<key>/entry.json      what was rendered, how, by which version, when
+//   <root>/history.sqlite                   the run history (reports/history_db.h), beside it
+// An entry is written into a temporary directory and renamed into place: a reader never sees a
+// half-written entry, and two processes rendering the same key both end with one whole entry.
+#pragma once
+
+#include "image/image.h"
+#include "scene/path_class.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gib::ref {
+
+// What a reference is of: the scene as the user names it (so `store verify` can load it again)
+// and the settings that change the image.
+struct ReferenceSpec {
+  std::string scene;                          // built-in name or scene file path (loadScene's)
+  std::vector<std::string> scene_parameters;  // "key=value" of a built-in scene
+  int width = 512;
+  int height = 512;
+  std::uint32_t spp = 1024;
+  std::uint64_t seed = 0;
+  scene::PathClass path_class;
+};
+
+// Everything entry.json records.
+struct StoreEntry {
+  std::string key;
+  std::filesystem::path dir;
+  ReferenceSpec spec;
+  std::string scene_name;  // scene::Scene::name
+  std::string scene_hash;
+  std::string renderer_version;  // kReferenceRendererVersion of the build that rendered it
+  std::string gibench_version;
+  std::string created;  // ISO 8601 UTC
+  double render_seconds = 0;
+  std::uint64_t size_bytes = 0;  // of the entry's files
+  // Rendered by this build's renderer (an entry of another version is never a hit, but stays
+  // until gc removes it).
+  bool current = false;
+};
+
+struct StoredReference {
+  StoreEntry entry;
+  image::Image mean;
+  image::Image variance;  // of the per-pixel mean; empty when spp < 2
+  bool hit = false;       // found rather than rendered by this call
+};
+
+struct VerifyResult {
+  std::string key;
+  bool passed = false;
+  std::string problem;  // why not: "scene changed (hash …)", "Z-test: 123 of 49152 values fail"
+  std::size_t tested = 0, failing = 0;
+  double min_p_value = 1;
+  double seconds = 0;
+};
+
+struct GcResult {
+  std::vector<StoreEntry> removed;         // or would be, with dry_run
+  std::vector<std::filesystem::path> debris;  // temporary directories of interrupted writes
+  std::uint64_t bytes = 0;
+};
+
+// The store key of `spec` for the loaded scene (lowercase hex).
+std::string referenceKey(const scene::Scene& scene, const ReferenceSpec& spec);
+
+class ReferenceStore {
+ public:
+  // Does not touch the disk; directories are created on the first write.
+  explicit ReferenceStore(std::filesystem::path root);
+  static std::filesystem::path defaultRoot();
+
+  const std::filesystem::path& root() const { return root_; }
+  std::filesystem::path historyDatabasePath() const { return root_ / "history.sqlite"; }
+
+  // The entry of `spec`, rendered and stored first when absent. Safe to call from several
+  // threads (one render per key at a time) and processes. `progress`: draw a progress bar on a
+  // terminal while rendering. Throws gib::InputError when the root cannot be written.
+  StoredReference obtain(const scene::Scene& scene, const ReferenceSpec& spec,
+                         bool progress = false);
+  std::optional<StoredReference> find(const std::string& key) const;
+
+  // Every entry, newest first. An unreadable entry.json throws gib::InputError naming it.
+  std::vector<StoreEntry> list() const;
+
+  // Re-renders the entry's scene at `spp` samples with a seed of its own and Z-tests it against
+  // the stored mean and variance at family-wise `significance` (metrics/z_test.h): a changed
+  // renderer or scene fails. Throws gib::InputError when the scene cannot be loaded.
+  VerifyResult verify(const StoreEntry& entry, std::uint32_t spp, double significance = 0.01,
+                      bool progress = false) const;
+
+  // Removes the entries whose key is not in `keep`, and the debris of interrupted writes.
+  GcResult collectGarbage(const std::set<std::string>& keep, bool dry_run) const;
+
+ private:
+  std::filesystem::path root_;
+  std::mutex mutex_;  // guards per-key render locks
+};
+
+}  // namespace gib::ref
