@@ -4,8 +4,8 @@
 // seed, path class) and the reference renderer's version (a hash of its sources made at build
 // time), so changing any of them makes a new key rather than a stale hit.
 //
-// Layout under the root (default $GIBENCH_STORE, else $XDG_CACHE_HOME/gibench, else
-// ~/.cache/gibench; `--store DIR` chooses another, a network disk say):
+// Layout under the root (default gib::defaultStoreRoot(), common/cache_paths.h; `--store DIR`
+// chooses another, a network disk say):
 //   <root>/references/<key>/reference.exr   mean (RGB) + variance, direct, indirect layers
 //   <root>/references/<key>/reference.png   for looking at
 //   <root>/references/<key>/entry.json      what was rendered, how, by which version, when
@@ -74,7 +74,7 @@ struct VerifyResult {
 };
 
 struct GcResult {
-  std::vector<StoreEntry> removed;         // or would be, with dry_run
+  std::vector<StoreEntry> removed;            // or would be, with dry_run
   std::vector<std::filesystem::path> debris;  // temporary directories of interrupted writes
   std::uint64_t bytes = 0;
 };
@@ -86,10 +86,8 @@ class ReferenceStore {
  public:
   // Does not touch the disk; directories are created on the first write.
   explicit ReferenceStore(std::filesystem::path root);
-  static std::filesystem::path defaultRoot();
 
   const std::filesystem::path& root() const { return root_; }
-  std::filesystem::path historyDatabasePath() const { return root_ / "history.sqlite"; }
 
   // The entry of `spec`, rendered and stored first when absent. Safe to call from several
   // threads (one render per key at a time) and processes. `progress`: draw a progress bar on a

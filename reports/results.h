@@ -117,12 +117,12 @@ struct Convergence {
 
 // Paths relative to the run directory; empty when not written.
 struct JobOutputs {
-  std::string image;            // the job's EXR (technique frame, or the reference's test render)
-  std::string image_png;        // the same through the display transform
-  std::string reference_png;    // the class reference
-  std::string difference_png;   // |test − reference|, amplified
-  std::string flip_png;         // the FLIP map (magma), when flip was measured
-  std::string timings_json;     // full per-pass timings with every frame's samples
+  std::string image;           // the job's EXR (technique frame, or the reference's test render)
+  std::string image_png;       // the same through the display transform
+  std::string reference_png;   // the class reference
+  std::string difference_png;  // |test − reference|, amplified
+  std::string flip_png;        // the FLIP map (magma), when flip was measured
+  std::string timings_json;    // full per-pass timings with every frame's samples
   bool operator==(const JobOutputs&) const = default;
 };
 

@@ -1,0 +1,28 @@
+// The HTML report of a run: a directory of static pages that opens from disk with no network.
+// index.html holds the run's facts and the scene × technique matrix (primary error metric and
+// frame time per job, coloured against the previous run); report/<slug>.html holds a page per job
+// (reference, technique image, amplified difference and FLIP map to swap between, metric tables,
+// per-pass timing table and bar chart, convergence plot with its fitted slope, the paper's
+// numbers beside ours, trend charts over recent runs). Charts are inline SVG; styles and scripts
+// are inline.
+#pragma once
+
+#include "reports/results.h"
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace gib::reports {
+
+struct ReportContext {
+  std::optional<RunResults> previous;  // the suite's previous run, for colouring
+  std::vector<RunResults> history;     // recent runs of the suite, oldest first (trends)
+};
+
+// Writes <run_dir>/index.html and <run_dir>/report/*.html for `results`, whose output paths are
+// relative to run_dir. Atomic per file. Returns the path of index.html.
+std::filesystem::path writeHtmlReport(const std::filesystem::path& run_dir,
+                                      const RunResults& results, const ReportContext& context);
+
+}  // namespace gib::reports

@@ -1,0 +1,32 @@
+// results.json: reading and writing a run's results (schema: docs/results-schema.md). Writing is
+// atomic; reading is strict, so that a truncated or hand-edited file is an error naming the field
+// rather than a silently wrong diff.
+#pragma once
+
+#include "reports/results.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace gib::reports {
+
+nlohmann::ordered_json resultsToJson(const RunResults& results);
+nlohmann::ordered_json jobToJson(const JobResult& job);
+
+// Throw gib::InputError "<source>: <field path>: <problem>; <fix>" for a missing or mistyped
+// field, and for a schema name or version this build cannot read.
+RunResults resultsFromJson(const nlohmann::json& json, const std::string& source);
+JobResult jobFromJson(const nlohmann::json& json, const std::string& source);
+
+// `path` may be a results.json file or a run directory holding one. Throws gib::InputError for a
+// missing file or malformed JSON as well.
+RunResults readResultsFile(const std::filesystem::path& path);
+JobResult readJobFile(const std::filesystem::path& path);
+
+// Atomic (temporary file, then rename); the directory must exist.
+void writeResultsFile(const std::filesystem::path& path, const RunResults& results);
+void writeJobFile(const std::filesystem::path& path, const JobResult& job);
+
+}  // namespace gib::reports
