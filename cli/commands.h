@@ -13,6 +13,7 @@ using CommandRunner = std::function<int()>;
 CommandRunner addListCommand(CLI::App& app);
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
+CommandRunner addDiffCommand(CLI::App& app);
 CommandRunner addReportCommand(CLI::App& app);
 
 }  // namespace gib::cli

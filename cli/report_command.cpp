@@ -1,8 +1,9 @@
 // gibench report RESULTS_DIR [--db FILE] [--store DIR] [--trend-runs N]
 // (Re)builds the HTML report of a run directory from its results.json, coloured against the
-// suite's previous run and with trends from the history database when there is one.
+// suite's previous run and with trends from the history database when there is one (--db, else
+// that of --store, else that of the store the run used).
 #include "cli/commands.h"
-#include "common/cache_paths.h"
+#include "cli/history_location.h"
 #include "common/input_error.h"
 #include "reports/html_report.h"
 #include "reports/results_json.h"
@@ -20,8 +21,7 @@ namespace fs = std::filesystem;
 
 struct ReportOptions {
   std::string dir;
-  std::string db;
-  std::string store;
+  HistoryLocation history;
   std::size_t trend_runs = 20;
 };
 
@@ -36,11 +36,35 @@ void checkRunDirectory(const fs::path& dir) {
         "'{}' holds no results.json; give the --out directory of a `gibench run`", dir.string()));
 }
 
+// The previous run of the suite and its recent runs from the history database: the one chosen
+// with --db or --store, else the one of the store the run used. A database the user did not
+// choose may be absent (no run recorded yet): the report then compares with nothing.
+reports::ReportContext historyContext(const reports::RunResults& results, HistoryLocation location,
+                                      std::size_t trend_runs) {
+  const bool chosen = !location.db.empty() || !location.store.empty();
+  if (!chosen) location.store = results.run.store;
+  std::error_code ec;
+  if (!chosen && !fs::exists(location.path(), ec)) {
+    fmt::print(stderr, "gibench: no history database at '{}': nothing to compare with\n",
+               location.path().string());
+    return {};
+  }
+  const reports::HistoryDatabase db = location.openExisting();
+  reports::ReportContext context;
+  context.previous = db.previousRun(results.run.suite, results.run.started);
+  context.history = db.recentRuns(results.run.suite, results.run.started, trend_runs);
+  // The report adds this run to its trends when the database does not hold it yet; keep the
+  // trend at trend_runs runs all the same.
+  if (context.history.size() == trend_runs && context.history.back().run.id != results.run.id)
+    context.history.erase(context.history.begin());
+  return context;
+}
+
 int runReport(const ReportOptions& o) {
   const fs::path dir = o.dir;
   checkRunDirectory(dir);
   const reports::RunResults results = reports::readResultsFile(dir / "results.json");
-  const reports::ReportContext context;
+  const reports::ReportContext context = historyContext(results, o.history, o.trend_runs);
   fmt::print("{}\n", reports::writeHtmlReport(dir, results, context).string());
   return 0;
 }
@@ -48,16 +72,17 @@ int runReport(const ReportOptions& o) {
 }  // namespace
 
 CommandRunner addReportCommand(CLI::App& app) {
-  CLI::App* report = app.add_subcommand("report", "(Re)build the HTML report of a run directory");
+  CLI::App* report = app.add_subcommand(
+      "report",
+      "(Re)build the HTML report of a run directory, compared with the suite's earlier runs in the "
+      "history database (--db, else that of --store, else that of the store the run used)");
   auto o = std::make_shared<ReportOptions>();
   report->add_option("RESULTS_DIR", o->dir, "run directory holding results.json")->required();
-  report->add_option("--db", o->db,
-                     "history database (default: history.sqlite of --store, else of the run's "
-                     "store)");
-  report->add_option("--store", o->store, "reference store root whose history database to use");
+  // Without either: the database of the store the run used.
+  o->history.addOptions(*report);
   report->add_option("--trend-runs", o->trend_runs, "runs shown in trend charts")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(std::size_t(1), std::size_t(1000)));
   return [o] { return runReport(*o); };
 }
 

@@ -95,7 +95,7 @@ std::string plural(std::size_t count, const char* noun) {
 }
 
 std::string formatMetricLine(const MetricChange& c) {
-  return fmt::format("{:<10} {}  {}  {:.6g} -> {:.6g}  {}  (tolerance {:g}% or {:g})",
+  return fmt::format("{:<10} {}  {}  {:.6g} -> {:.6g}  {}  (tolerance {:g}%, absolute {:g})",
                      verdictName(c.verdict), c.job, c.metric, c.base, c.next,
                      formatPercent(c.relative_change), 100 * c.tolerance.relative,
                      c.tolerance.absolute);
