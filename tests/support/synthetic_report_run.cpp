@@ -52,6 +52,20 @@ std::string slugOf(const std::string& id) {
   return slug;
 }
 
+// What every job of the synthetic run shares: the Cornell box at the small picture size.
+reports::JobResult cornellJob(const std::string& id, const std::string& case_name,
+                              const std::string& technique) {
+  reports::JobResult job;
+  job.id = id;
+  job.slug = slugOf(id);
+  job.case_name = case_name;
+  job.scene = "cornell";
+  job.technique = technique;
+  job.width = kWidth;
+  job.height = kHeight;
+  return job;
+}
+
 }  // namespace
 
 nlohmann::ordered_json nestedPassTimings(double scale, int frames) {
@@ -91,16 +105,9 @@ nlohmann::ordered_json nestedPassTimings(double scale, int frames) {
 
 reports::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse,
                                          double frame_scale) {
-  reports::JobResult job;
-  job.id = "cornell-direct/" + sweep;
-  job.slug = slugOf(job.id);
-  job.case_name = "cornell-direct";
-  job.scene = "cornell";
+  reports::JobResult job = cornellJob("cornell-direct/" + sweep, "cornell-direct", "direct");
   job.scene_hash = "5f1e0c2b9a8d7e6f5f1e0c2b9a8d7e6f";
-  job.technique = "direct";
   job.parameters = {{"shadow", "pcf"}, {"light_samples", "4"}};
-  job.width = kWidth;
-  job.height = kHeight;
   job.path_class = "LE + LDE";
   job.reference = {"ref-direct-0001", 256, 0, "LE + LDE", true, 0};
   job.metrics = {{"relmse", relmse}, {"flip_mean", 0.08}, {"psnr", 31.5}};
@@ -149,14 +156,7 @@ reports::RunResults syntheticReportResults(const std::string& run_id, const std:
   run.store = "/tmp/store";
   results.primary_metric = "relmse";
 
-  reports::JobResult reference;
-  reference.id = "cornell-reference";
-  reference.slug = "cornell-reference";
-  reference.case_name = "cornell-reference";
-  reference.scene = "cornell";
-  reference.technique = "reference";
-  reference.width = kWidth;
-  reference.height = kHeight;
+  reports::JobResult reference = cornellJob("cornell-reference", "cornell-reference", "reference");
   reference.path_class = "all paths";
   reference.reference = {"ref-all-0001", 256, 0, "all paths", false, 12.5};
   reference.metrics = {{"relmse", 0.0009}, {"flip_mean", 0.02}, {"psnr", 41.0}};
@@ -167,7 +167,7 @@ reports::RunResults syntheticReportResults(const std::string& run_id, const std:
   spp.fit_slope = -1.0;
   spp.fit_slope_ci95 = 0.01;
   reference.convergence = spp;
-  reference.timings = nullptr;
+  reference.timings = nullptr;  // the reference renderer is not timed per pass
   reference.outputs = outputsOf(reference.slug, true);
   reference.seconds = 12.5;
   results.jobs.push_back(reference);
