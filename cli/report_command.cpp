@@ -6,6 +6,7 @@
 #include "cli/history_location.h"
 #include "common/input_error.h"
 #include "reports/html_report.h"
+#include "reports/report_context.h"
 #include "reports/results_json.h"
 
 #include <fmt/format.h>
@@ -49,15 +50,7 @@ reports::ReportContext historyContext(const reports::RunResults& results, Histor
                location.path().string());
     return {};
   }
-  const reports::HistoryDatabase db = location.openExisting();
-  reports::ReportContext context;
-  context.previous = db.previousRun(results.run.suite, results.run.started);
-  context.history = db.recentRuns(results.run.suite, results.run.started, trend_runs);
-  // The report adds this run to its trends when the database does not hold it yet; keep the
-  // trend at trend_runs runs all the same.
-  if (context.history.size() == trend_runs && context.history.back().run.id != results.run.id)
-    context.history.erase(context.history.begin());
-  return context;
+  return reports::loadReportContext(location.openExisting(), results, trend_runs);
 }
 
 int runReport(const ReportOptions& o) {
