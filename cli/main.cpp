@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addRenderCommand, "render");
   add(&gib::cli::addCompareCommand, "compare");
   add(&gib::cli::addRunCommand, "run");
+  add(&gib::cli::addDiffCommand, "diff");
 
   try {
     app.parse(argc, argv);

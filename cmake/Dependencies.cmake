@@ -11,6 +11,7 @@ find_package(nlohmann_json REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(tomlplusplus REQUIRED)
 find_package(tinyobjloader REQUIRED)
+find_package(SQLite3 REQUIRED)
 # Headless OpenGL through GLVND: libOpenGL (no GLX) and libEGL.
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)

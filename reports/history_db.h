@@ -65,9 +65,13 @@ class HistoryDatabase {
   std::optional<RunResults> run(std::int64_t row) const;
   std::optional<RunResults> run(const std::string& id) const;
 
-  // Runs matching the filter's suite, commit and date bounds, newest first.
+  // Runs matching the filter's suite, commit and date bounds (and, when it names a scene,
+  // technique or job, having one job that matches them all), newest first. A date bound is a
+  // UTC date or date-time prefix ("2026-11-22", "2026-11-22T10", "2026-11-22T10:04:05Z"); else
+  // gib::InputError.
   std::vector<RunSummary> runs(const HistoryFilter& filter) const;
-  // Values of filter.metric for the matching jobs, newest run first.
+  // Values of filter.metric for the matching jobs, newest run first; filter.limit counts runs.
+  // NaN values are stored as NULL and read back as NaN.
   std::vector<MetricPoint> values(const HistoryFilter& filter) const;
 
   // The newest run of `suite` started before `started` (for colouring the report), and the

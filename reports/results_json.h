@@ -16,9 +16,10 @@ nlohmann::ordered_json resultsToJson(const RunResults& results);
 nlohmann::ordered_json jobToJson(const JobResult& job);
 
 // Throw gib::InputError "<source>: <field path>: <problem>; <fix>" for a missing or mistyped
-// field, and for a schema name or version this build cannot read.
-RunResults resultsFromJson(const nlohmann::json& json, const std::string& source);
-JobResult jobFromJson(const nlohmann::json& json, const std::string& source);
+// field, and for a schema name or version this build cannot read. Ordered JSON: metrics and
+// parameters keep their order (a nlohmann::json argument converts, but sorts them by name).
+RunResults resultsFromJson(const nlohmann::ordered_json& json, const std::string& source);
+JobResult jobFromJson(const nlohmann::ordered_json& json, const std::string& source);
 
 // `path` may be a results.json file or a run directory holding one. Throws gib::InputError for a
 // missing file or malformed JSON as well.
