@@ -4,6 +4,7 @@
 #pragma once
 
 #include "reports/results.h"
+#include "suites/job_expansion.h"
 #include "suites/suite.h"
 
 #include <cstdio>
