@@ -13,5 +13,6 @@ using CommandRunner = std::function<int()>;
 CommandRunner addListCommand(CLI::App& app);
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
+CommandRunner addStoreCommand(CLI::App& app);
 
 }  // namespace gib::cli

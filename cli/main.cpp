@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addListCommand, "list");
   add(&gib::cli::addRenderCommand, "render");
   add(&gib::cli::addCompareCommand, "compare");
+  add(&gib::cli::addStoreCommand, "store");
 
   try {
     app.parse(argc, argv);
