@@ -15,5 +15,6 @@ CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
 CommandRunner addRunCommand(CLI::App& app);
 CommandRunner addDiffCommand(CLI::App& app);
+CommandRunner addStoreCommand(CLI::App& app);
 
 }  // namespace gib::cli
