@@ -5,8 +5,8 @@
 #include "common/join.h"
 #include "gib/reference_renderer_version.h"
 #include "reference/reference_store.h"
-#include "reports/history_db.h"
 #include "reference/reference_store_entry.h"
+#include "reports/history_db.h"
 #include "scene/path_class.h"
 
 #include <fmt/format.h>
