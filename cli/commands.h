@@ -16,5 +16,6 @@ CommandRunner addCompareCommand(CLI::App& app);
 CommandRunner addRunCommand(CLI::App& app);
 CommandRunner addDiffCommand(CLI::App& app);
 CommandRunner addStoreCommand(CLI::App& app);
+CommandRunner addReportCommand(CLI::App& app);
 
 }  // namespace gib::cli

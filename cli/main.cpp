@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addRunCommand, "run");
   add(&gib::cli::addDiffCommand, "diff");
   add(&gib::cli::addStoreCommand, "store");
+  add(&gib::cli::addReportCommand, "report");
 
   try {
     app.parse(argc, argv);
