@@ -97,10 +97,13 @@ metrics::MetricReport measure(const image::Image& reference, const image::Image&
   return metrics::evaluateMetrics(reference, test, names);
 }
 
-// The metric the convergence fit follows: relMSE when measured, else the first value.
+// The metric the convergence fit follows: MSE when measured (for an unbiased renderer its
+// expectation falls exactly as 1/spp, where relMSE's per-pixel ratios are heavy-tailed at low spp),
+// else relMSE, else the first value.
 std::string fitMetric(const reports::NamedValues& values) {
-  for (const auto& [name, value] : values)
-    if (name == "relmse") return name;
+  for (const char* preferred : {"mse", "relmse"})
+    for (const auto& [name, value] : values)
+      if (name == preferred) return name;
   return values.empty() ? std::string() : values.front().first;
 }
 

@@ -27,20 +27,20 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-// Small enough for seconds per run: a 24x24 Cornell box, a 16-spp reference with a convergence
+// Small enough for seconds per run: a 32x32 Cornell box, a 1024-spp reference with a convergence
 // series, and the direct technique with two shadow filters.
 constexpr const char* kTinySuite = R"(name = "tiny"
 description = "a tiny suite for the tests"
 
 [defaults]
-width = 24
-height = 24
-metrics = ["relmse", "flip"]
+width = 32
+height = 32
+metrics = ["mse", "relmse", "flip"]
 frames = 2
 warmup = 0
 
 [defaults.reference]
-spp = 16
+spp = 1024
 
 [tolerances]
 relmse = { relative = 0.1 }
@@ -48,7 +48,7 @@ relmse = { relative = 0.1 }
 [[case]]
 scene = "cornell"
 technique = "reference"
-checkpoints = [2, 4, 8]
+checkpoints = [4, 16, 64]
 
 [[case]]
 scene = "cornell"
@@ -105,9 +105,12 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
   EXPECT_EQ(reference.id, "cornell-reference");
   ASSERT_TRUE(reference.convergence.has_value());
   ASSERT_EQ(reference.convergence->points.size(), 3u);
-  EXPECT_EQ(reference.convergence->fit_metric, "relmse");
-  // Error of an independent render falls as samples grow: relMSE ~ 1/spp, a slope near −1.
-  EXPECT_LT(reference.convergence->fit_slope, -0.5);
+  EXPECT_EQ(reference.convergence->fit_metric, "mse");
+  // The expected MSE of an independent render falls as 1/spp (a slope of −1 on log-log axes)
+  // while the reference's own variance is negligible; three points of a 1024-pixel image scatter
+  // about that, hence the wide bounds.
+  EXPECT_LT(reference.convergence->fit_slope, -0.6);
+  EXPECT_GT(reference.convergence->fit_slope, -1.5);
   EXPECT_FALSE(reference.reference.store_hit);
 
   for (const std::size_t i : {1u, 2u}) {
@@ -117,12 +120,20 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
     EXPECT_EQ(direct.reference.path_class, "LE + LDE");
     ASSERT_TRUE(direct.full_reference.has_value());
     // The full reference is the reference job's: rendered once, then found in the store.
-    EXPECT_EQ(direct.full_reference->key, reference.reference.key);
+    EXPECT_EQ(direct.full_reference->key, results.jobs[0].reference.key);
     EXPECT_TRUE(direct.full_reference->store_hit);
     ASSERT_TRUE(direct.metric("relmse").has_value());
     EXPECT_TRUE(direct.frameMedianMs().has_value());
     // Direct light leaves out indirect light: farther from the full reference than its own.
-    EXPECT_GT(direct.metrics_full.front().second, direct.metrics.front().second);
+    // (relMSE, not MSE: MSE is dominated by the bright emitter's edge pixels at this size.)
+    auto relmse = [](const reports::NamedValues& values) {
+      for (const auto& [name, value] : values)
+        if (name == "relmse") return value;
+      return -1.0;
+    };
+    EXPECT_GT(relmse(direct.metrics_full), 2 * relmse(direct.metrics));
+    // Its class reference is another store entry than the reference job's full one.
+    EXPECT_NE(direct.reference.key, reference.reference.key);
     for (const std::string& file :
          {direct.outputs.image, direct.outputs.image_png, direct.outputs.reference_png,
           direct.outputs.difference_png, direct.outputs.flip_png, direct.outputs.timings_json})
