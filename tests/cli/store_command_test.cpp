@@ -1,6 +1,9 @@
 // `gibench store list|verify|gc` as a user runs it, on a store filled by the library.
+#include "common/cache_paths.h"
+#include "reports/history_db.h"
 #include "support/reference_store_fixtures.h"
 #include "support/run_command.h"
+#include "support/synthetic_results.h"
 #include "support/temp_dir.h"
 
 #include <gmock/gmock.h>
@@ -120,6 +123,29 @@ TEST(StoreCommand, GcDryRunRemovesNothingAndKeepIsKept) {
   EXPECT_THAT(gc.out, Not(HasSubstr(shortKey(store.cornell))));
   EXPECT_TRUE(fs::exists(store.cornell.entry.dir));
   EXPECT_FALSE(fs::exists(store.furnace.entry.dir));
+}
+
+TEST(StoreCommand, GcKeepsTheReferencesOfRecordedRuns) {
+  TempDir dir;
+  FilledStore store(dir);
+  // A run in the store's history database that used the cornell entry.
+  reports::JobResult job = syntheticJob("cornell-direct", {{"relmse", 0.01}});
+  job.reference.key = store.cornell.entry.key;
+  reports::HistoryDatabase::open(historyDatabasePath(store.root))
+      .append(syntheticRun("20261122-000000-smoke-00000000", {job}));
+  CommandResult gc = runGibench({"store", "gc", "--store", store.root.string()}, dir.path());
+  ASSERT_EQ(gc.exit_code, 0) << gc.err;
+  EXPECT_TRUE(fs::exists(store.cornell.entry.dir));
+  EXPECT_FALSE(fs::exists(store.furnace.entry.dir));
+}
+
+TEST(StoreCommand, GcCreatesNoHistoryDatabase) {
+  TempDir dir;
+  FilledStore store(dir);
+  ASSERT_EQ(runGibench({"store", "gc", "--dry-run", "--store", store.root.string()}, dir.path())
+                .exit_code,
+            0);
+  EXPECT_FALSE(fs::exists(historyDatabasePath(store.root)));
 }
 
 TEST(StoreCommand, BadInputExitsWithCodeTwoAndOneLine) {
