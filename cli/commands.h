@@ -14,5 +14,6 @@ CommandRunner addListCommand(CLI::App& app);
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
 CommandRunner addDiffCommand(CLI::App& app);
+CommandRunner addHistoryCommand(CLI::App& app);
 
 }  // namespace gib::cli

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addRenderCommand, "render");
   add(&gib::cli::addCompareCommand, "compare");
   add(&gib::cli::addDiffCommand, "diff");
+  add(&gib::cli::addHistoryCommand, "history");
 
   try {
     app.parse(argc, argv);

@@ -1,6 +1,7 @@
 #include "reports/json_fields.h"
 
 #include "common/input_error.h"
+#include "reports/json_number.h"
 
 #include <fmt/format.h>
 
@@ -8,12 +9,6 @@
 #include <limits>
 
 namespace gib::reports::detail {
-
-nlohmann::ordered_json numberToJson(double value) {
-  if (std::isfinite(value)) return value;
-  if (std::isnan(value)) return "nan";
-  return value > 0 ? "inf" : "-inf";
-}
 
 JsonField::JsonField(const nlohmann::ordered_json& value, std::string source, std::string fix)
     : value_(&value), source_(std::move(source)), fix_(std::move(fix)) {}
@@ -37,6 +32,11 @@ std::string describeType(const nlohmann::ordered_json& value) {
   return "a number";
 }
 
+// "jobs[2]" and "metrics" make "jobs[2].metrics".
+std::string memberPath(const std::string& path, std::string_view name) {
+  return path.empty() ? std::string(name) : fmt::format("{}.{}", path, name);
+}
+
 }  // namespace
 
 void JsonField::expect(bool ok, const char* expected) const {
@@ -45,7 +45,7 @@ void JsonField::expect(bool ok, const char* expected) const {
 
 JsonField JsonField::at(const char* key) const {
   expect(value_->is_object(), "an object");
-  const std::string path = path_.empty() ? std::string(key) : path_ + "." + key;
+  const std::string path = memberPath(path_, key);
   auto it = value_->find(key);
   if (it == value_->end()) JsonField(*value_, *this, path).fail("missing");
   return JsonField(*it, *this, path);
@@ -75,9 +75,9 @@ double JsonField::asNumber() const {
     if (text == "inf") return std::numeric_limits<double>::infinity();
     if (text == "-inf") return -std::numeric_limits<double>::infinity();
   }
-  fail(fmt::format(
-      "expected a number (or \"nan\", \"inf\", \"-inf\"), found {}",
-      value_->is_string() ? "\"" + value_->get<std::string>() + "\"" : describeType(*value_)));
+  fail(fmt::format("expected a number (or \"nan\", \"inf\", \"-inf\"), found {}",
+                   value_->is_string() ? fmt::format("\"{}\"", value_->get<std::string>())
+                                       : describeType(*value_)));
 }
 
 int JsonField::asInt() const {
@@ -109,7 +109,17 @@ void JsonField::forEachMember(
     const std::function<void(const std::string& name, const JsonField&)>& visit) const {
   expect(value_->is_object(), "an object");
   for (const auto& [name, member] : value_->items())
-    visit(name, JsonField(member, *this, path_.empty() ? name : path_ + "." + name));
+    visit(name, JsonField(member, *this, memberPath(path_, name)));
 }
 
 }  // namespace gib::reports::detail
+
+namespace gib::reports {
+
+nlohmann::ordered_json numberToJson(double value) {
+  if (std::isfinite(value)) return value;
+  if (std::isnan(value)) return "nan";
+  return value > 0 ? "inf" : "-inf";
+}
+
+}  // namespace gib::reports

@@ -1,7 +1,7 @@
 // Private to gib_reports: strict reading of the JSON files gibench writes (results.json, job
 // files), so that a truncated or hand-edited file is one clear error naming the field
 // ("<source>: jobs[2].metrics.relmse: expected a number, found a string; <fix>") instead of a
-// silently wrong diff; and numbers that may be non-finite, which JSON cannot hold.
+// silently wrong diff. Numbers may be non-finite (reports/json_number.h).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -12,10 +12,6 @@
 #include <string>
 
 namespace gib::reports::detail {
-
-// JSON has no NaN or infinity: non-finite numbers are written as the strings "nan", "inf" and
-// "-inf" (what `gibench compare --json` prints too), finite ones as numbers.
-nlohmann::ordered_json numberToJson(double value);
 
 // One value inside a document being read, with where it is, for the error messages.
 class JsonField {
@@ -31,7 +27,7 @@ class JsonField {
   bool has(const char* key) const;
 
   std::string asString() const;
-  double asNumber() const;  // a number, or "nan", "inf", "-inf"
+  double asNumber() const;  // a number, or "nan", "inf", "-inf" (reports/json_number.h)
   int asInt() const;
   unsigned long long asUnsigned() const;
   bool asBool() const;

@@ -1,7 +1,7 @@
 #include "reports/results_diff.h"
 
 #include "metrics/timing_statistics.h"
-#include "reports/json_fields.h"
+#include "reports/json_number.h"
 
 #include <fmt/format.h>
 
@@ -15,7 +15,6 @@ namespace gib::reports {
 namespace {
 
 using json = nlohmann::ordered_json;
-using detail::numberToJson;
 
 constexpr std::string_view kFullPrefix = "full:";
 

@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "image/output_files.h"
 #include "reports/json_fields.h"
+#include "reports/json_number.h"
 
 #include <fmt/format.h>
 
@@ -16,7 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 using detail::JsonField;
-using detail::numberToJson;
 
 constexpr const char* kJobSchemaName = "gibench-job";
 constexpr const char* kResultsFix =
