@@ -1,24 +1,37 @@
 #include "reports/json_fields.h"
 
 #include "common/input_error.h"
-#include "reports/json_number.h"
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <limits>
 
 namespace gib::reports::detail {
 
-JsonField::JsonField(const nlohmann::ordered_json& value, std::string source, std::string fix)
-    : value_(&value), source_(std::move(source)), fix_(std::move(fix)) {}
+JsonField::JsonField(const nlohmann::ordered_json& value, std::string_view source,
+                     std::string_view fix)
+    : value_(&value), source_(source), fix_(fix) {}
 
-JsonField::JsonField(const nlohmann::ordered_json& value, const JsonField& parent, std::string path)
-    : value_(&value), source_(parent.source_), fix_(parent.fix_), path_(std::move(path)) {}
+JsonField::JsonField(const nlohmann::ordered_json& value, const JsonField& parent,
+                     std::string_view key, std::size_t index)
+    : value_(&value),
+      source_(parent.source_),
+      fix_(parent.fix_),
+      parent_(&parent),
+      key_(key),
+      index_(index) {}
+
+std::string JsonField::path() const {
+  if (!parent_) return {};
+  const std::string path = parent_->path();
+  if (key_.empty()) return fmt::format("{}[{}]", path, index_);
+  return path.empty() ? std::string(key_) : fmt::format("{}.{}", path, key_);
+}
 
 void JsonField::fail(const std::string& problem) const {
-  const std::string where = path_.empty() ? "top level" : path_;
-  throw InputError(fmt::format("{}: {}: {}; {}", source_, where, problem, fix_));
+  const std::string path = this->path();
+  throw InputError(
+      fmt::format("{}: {}: {}; {}", source_, path.empty() ? "top level" : path, problem, fix_));
 }
 
 namespace {
@@ -32,11 +45,6 @@ std::string describeType(const nlohmann::ordered_json& value) {
   return "a number";
 }
 
-// "jobs[2]" and "metrics" make "jobs[2].metrics".
-std::string memberPath(const std::string& path, std::string_view name) {
-  return path.empty() ? std::string(name) : fmt::format("{}.{}", path, name);
-}
-
 }  // namespace
 
 void JsonField::expect(bool ok, const char* expected) const {
@@ -45,10 +53,9 @@ void JsonField::expect(bool ok, const char* expected) const {
 
 JsonField JsonField::at(const char* key) const {
   expect(value_->is_object(), "an object");
-  const std::string path = memberPath(path_, key);
   auto it = value_->find(key);
-  if (it == value_->end()) JsonField(*value_, *this, path).fail("missing");
-  return JsonField(*it, *this, path);
+  if (it == value_->end()) JsonField(*value_, *this, key, 0).fail("missing");
+  return JsonField(*it, *this, key, 0);
 }
 
 bool JsonField::has(const char* key) const {
@@ -101,25 +108,13 @@ bool JsonField::asBool() const {
 void JsonField::forEachElement(const std::function<void(const JsonField&)>& visit) const {
   expect(value_->is_array(), "an array");
   std::size_t index = 0;
-  for (const auto& element : *value_)
-    visit(JsonField(element, *this, fmt::format("{}[{}]", path_, index++)));
+  for (const auto& element : *value_) visit(JsonField(element, *this, {}, index++));
 }
 
 void JsonField::forEachMember(
     const std::function<void(const std::string& name, const JsonField&)>& visit) const {
   expect(value_->is_object(), "an object");
-  for (const auto& [name, member] : value_->items())
-    visit(name, JsonField(member, *this, memberPath(path_, name)));
+  for (const auto& [name, member] : value_->items()) visit(name, JsonField(member, *this, name, 0));
 }
 
 }  // namespace gib::reports::detail
-
-namespace gib::reports {
-
-nlohmann::ordered_json numberToJson(double value) {
-  if (std::isfinite(value)) return value;
-  if (std::isnan(value)) return "nan";
-  return value > 0 ? "inf" : "-inf";
-}
-
-}  // namespace gib::reports

@@ -365,7 +365,8 @@ RunResults readResultsFile(const fs::path& path) {
 
 JobResult readJobFile(const fs::path& path) {
   const json document = parseFile(path);
-  const JsonField top(document, path.string(), kResultsFix);
+  const std::string source = path.string();  // outlives the fields, which refer to it
+  const JsonField top(document, source, kResultsFix);
   checkSchema(top, kJobSchemaName);
   return readJob(top);
 }
