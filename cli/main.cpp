@@ -24,8 +24,11 @@ int main(int argc, char** argv) {
   add(&gib::cli::addListCommand, "list");
   add(&gib::cli::addRenderCommand, "render");
   add(&gib::cli::addCompareCommand, "compare");
+  add(&gib::cli::addRunCommand, "run");
   add(&gib::cli::addDiffCommand, "diff");
   add(&gib::cli::addHistoryCommand, "history");
+  add(&gib::cli::addStoreCommand, "store");
+  add(&gib::cli::addReportCommand, "report");
 
   try {
     app.parse(argc, argv);

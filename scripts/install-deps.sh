@@ -19,6 +19,8 @@ packages=(
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   # Tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # Report tests: headless browser
+  chromium
 )
 
 missing=()

@@ -25,18 +25,14 @@ std::string readFile(const std::filesystem::path& path) {
 
 }  // namespace
 
-CommandResult runGibench(const std::vector<std::string>& args,
+CommandResult runProgram(const std::vector<std::string>& argv_strings,
                          const std::filesystem::path& work_dir,
                          const std::vector<std::string>& environment) {
-#ifndef GIB_GIBENCH_PATH
-  throw std::runtime_error("tests were built without the gibench binary");
-#else
   const std::filesystem::path out_path = work_dir / "stdout.txt";
   const std::filesystem::path err_path = work_dir / "stderr.txt";
-  std::vector<std::string> argv_strings = {GIB_GIBENCH_PATH};
-  argv_strings.insert(argv_strings.end(), args.begin(), args.end());
+  std::vector<std::string> args = argv_strings;
   std::vector<char*> argv;
-  for (std::string& s : argv_strings) argv.push_back(s.data());
+  for (std::string& s : args) argv.push_back(s.data());
   argv.push_back(nullptr);
 
   posix_spawn_file_actions_t actions;
@@ -45,18 +41,23 @@ CommandResult runGibench(const std::vector<std::string>& args,
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(),
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  // GL debug output on: a GL error in any command fails it (exit 3), hence the test.
+  // The given variables replace inherited ones of the same name.
   std::vector<std::string> env_strings = environment;
-  env_strings.push_back("GIBENCH_GL_DEBUG=1");
+  auto name = [](std::string_view entry) { return entry.substr(0, entry.find('=')); };
+  auto overridden = [&](std::string_view entry) {
+    for (const std::string& e : environment)
+      if (name(e) == name(entry)) return true;
+    return false;
+  };
   for (char** e = environ; *e; ++e)
-    if (std::string_view(*e).substr(0, 17) != "GIBENCH_GL_DEBUG=") env_strings.emplace_back(*e);
+    if (!overridden(*e)) env_strings.emplace_back(*e);
   std::vector<char*> env;
   for (std::string& s : env_strings) env.push_back(s.data());
   env.push_back(nullptr);
   pid_t pid = 0;
-  int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), env.data());
+  int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), env.data());
   posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) throw std::runtime_error("cannot start " + argv_strings[0]);
+  if (rc != 0) throw std::runtime_error("cannot start " + args[0]);
   int status = 0;
   waitpid(pid, &status, 0);
   CommandResult result;
@@ -66,6 +67,20 @@ CommandResult runGibench(const std::vector<std::string>& args,
   std::filesystem::remove(out_path);
   std::filesystem::remove(err_path);
   return result;
+}
+
+CommandResult runGibench(const std::vector<std::string>& args,
+                         const std::filesystem::path& work_dir,
+                         const std::vector<std::string>& environment) {
+#ifndef GIB_GIBENCH_PATH
+  throw std::runtime_error("tests were built without the gibench binary");
+#else
+  std::vector<std::string> argv = {GIB_GIBENCH_PATH};
+  argv.insert(argv.end(), args.begin(), args.end());
+  // GL debug output on: a GL error in any command fails it (exit 3), hence the test.
+  std::vector<std::string> env = environment;
+  env.push_back("GIBENCH_GL_DEBUG=1");
+  return runProgram(argv, work_dir, env);
 #endif
 }
 

@@ -1,0 +1,179 @@
+#include "reports/index_page.h"
+
+#include "reports/html_text.h"
+#include "reports/number_format.h"
+#include "reports/report_labels.h"
+#include "reports/report_page.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace gib::reports {
+
+namespace {
+
+std::string runFacts(const RunInfo& run) {
+  const std::string gl = run.gl_renderer.empty() ? std::string()
+                                                 : fmt::format("{} ({}, {})", run.gl_renderer,
+                                                               run.gl_vendor, run.gl_version);
+  return factsTable({
+      {"suite", run.suite},
+      {"description", run.suite_description},
+      {"suite file", run.suite_file},
+      {"run", run.id},
+      {"started", run.started},
+      {"finished", run.finished},
+      {"commit", run.git_commit.empty()
+                     ? std::string("unknown")
+                     : run.git_commit + (run.git_dirty ? " (with uncommitted changes)" : "")},
+      {"version", run.gibench_version},
+      {"build type", run.build_type},
+      {"host", run.host},
+      {"CPU", run.cpu_cores > 0 ? fmt::format("{} ({} cores)", run.cpu, run.cpu_cores) : run.cpu},
+      {"GL renderer", gl},
+      {"Embree", run.embree_version},
+      {"parallel jobs", fmt::format("{}", run.parallel_jobs)},
+      {"reference store", run.store},
+      {"complete", run.complete ? "yes" : "no: some jobs of the suite were left out (--only)"},
+  });
+}
+
+std::string comparisonIntro(const RunComparison& comparison) {
+  if (!comparison.hasPrevious())
+    return "<p class=\"note\">No previous run of this suite in the history: nothing is "
+           "coloured.</p>\n";
+  const RunInfo& previous = *comparison.previousRun();
+  const DiffReport& diff = *comparison.diff();
+  return fmt::format(
+      "<p>Compared with the previous run <strong>{}</strong> (commit {}, started {}): {} "
+      "regression{}, {} improvement{}.</p>\n"
+      "<p class=\"legend\"><span class=\"verdict-regressed\">worse beyond tolerance</span>"
+      "<span class=\"verdict-improved\">better beyond tolerance</span>"
+      "<span class=\"verdict-unchanged\">within tolerance, or new</span></p>\n",
+      escapeHtml(previous.id), escapeHtml(shortCommit(previous)), escapeHtml(previous.started),
+      diff.regressions(), diff.regressions() == 1 ? "" : "s", diff.improvements(),
+      diff.improvements() == 1 ? "" : "s");
+}
+
+std::string jobLink(const RunResults& results, const std::string& id) {
+  const JobResult* job = results.findJob(id);
+  if (!job) return escapeHtml(id);  // a job of the previous run only
+  return fmt::format("<a href=\"{}\">{}</a>", escapeHtml(urlPath(jobPageFile(*job))),
+                     escapeHtml(id));
+}
+
+std::string toleranceText(const Tolerance& t) {
+  return fmt::format("±max({}, {}·|previous|)", formatNumber(t.absolute), formatNumber(t.relative));
+}
+
+std::string regressionsSection(const RunResults& results, const RunComparison& comparison) {
+  if (!comparison.hasPrevious()) return {};
+  const DiffReport& diff = *comparison.diff();
+  HtmlTable table({{"job"},
+                   {"quantity"},
+                   {"previous", true},
+                   {"this run", true},
+                   {"change", true},
+                   {"allowed"}});
+  for (const MetricChange& c : diff.metrics)
+    if (c.verdict == Verdict::kRegressed)
+      table.addRow({jobLink(results, c.job), escapeHtml(c.metric), formatNumber(c.base),
+                    formatNumber(c.next), formatChange(c.relative_change),
+                    escapeHtml(toleranceText(c.tolerance))});
+  for (const TimingChange& c : diff.timings)
+    if (c.verdict == Verdict::kRegressed)
+      table.addRow({jobLink(results, c.job), "median frame time (ms)",
+                    formatNumber(c.base_median_ms), formatNumber(c.next_median_ms),
+                    formatChange(c.relative_change),
+                    escapeHtml(fmt::format(
+                        "+{} and Mann–Whitney p < {} (p = {})", formatShare(c.tolerance.relative),
+                        formatNumber(c.tolerance.significance), formatNumber(c.p_value, 2)))});
+  for (const JobPresence& p : diff.presence)
+    if (p.verdict == Verdict::kMissing)
+      table.addRow({escapeHtml(p.job), "the job", "ran", "missing", "", ""});
+  if (table.empty()) return {};
+  return htmlSection("regressions", "Regressions", table.html());
+}
+
+// Scenes in suite order; techniques with the reference first, then in suite order.
+std::vector<std::string> orderedUnique(const std::vector<JobResult>& jobs,
+                                       std::string JobResult::*field, const std::string& first) {
+  std::vector<std::string> names;
+  if (!first.empty() && std::any_of(jobs.begin(), jobs.end(),
+                                    [&](const JobResult& job) { return job.*field == first; }))
+    names.push_back(first);
+  for (const JobResult& job : jobs)
+    if (std::find(names.begin(), names.end(), job.*field) == names.end())
+      names.push_back(job.*field);
+  return names;
+}
+
+std::string matrixEntry(const RunResults& results, const JobResult& job, bool name_case,
+                        const RunComparison& comparison) {
+  const std::optional<JobComparison> compared = comparison.job(job.id);
+  std::string label = sweepLabel(job);
+  if (name_case || label.empty())
+    label = label.empty() ? job.case_name : job.case_name + " " + label;
+  std::string html =
+      fmt::format("<div class=\"job {}\"><a href=\"{}\">{}</a>",
+                  verdictClass(compared ? std::optional(compared->overall) : std::nullopt),
+                  escapeHtml(urlPath(jobPageFile(job))), escapeHtml(label));
+  if (const std::optional<double> value = job.metric(results.primary_metric)) {
+    const MetricChange* change = compared ? compared->findMetric(results.primary_metric) : nullptr;
+    html += fmt::format("<div>{} {}</div>", escapeHtml(results.primary_metric),
+                        verdictSpan(formatNumber(*value), change));
+  }
+  if (const std::optional<double> frame = job.frameMedianMs()) {
+    const std::optional<TimingChange> timing = compared ? compared->timing : std::nullopt;
+    html += fmt::format("<div>frame {}</div>", verdictSpan(formatNumber(*frame) + " ms", timing));
+  }
+  return html + "</div>";
+}
+
+std::string matrixSection(const RunResults& results, const RunComparison& comparison) {
+  const std::vector<std::string> scenes = orderedUnique(results.jobs, &JobResult::scene, "");
+  const std::vector<std::string> techniques =
+      orderedUnique(results.jobs, &JobResult::technique, "reference");
+  std::vector<TableColumn> columns = {{"scene"}};
+  for (const std::string& technique : techniques) columns.push_back({technique});
+  HtmlTable table(columns, "matrix");
+  for (const std::string& scene : scenes) {
+    std::vector<std::string> cells = {escapeHtml(scene)};
+    for (const std::string& technique : techniques) {
+      std::vector<const JobResult*> jobs;
+      std::set<std::string> cases;
+      for (const JobResult& job : results.jobs)
+        if (job.scene == scene && job.technique == technique) {
+          jobs.push_back(&job);
+          cases.insert(job.case_name);
+        }
+      std::string cell;
+      for (const JobResult* job : jobs)
+        cell += matrixEntry(results, *job, cases.size() > 1, comparison);
+      cells.push_back(cell);
+    }
+    table.addRow(cells);
+  }
+  const std::string intro = fmt::format(
+      "<p class=\"muted\">Each job: {} against the reference of its path class, and the median "
+      "frame time. Follow a job to its images, metrics and timings.</p>\n",
+      escapeHtml(results.primary_metric.empty() ? "the error" : results.primary_metric));
+  return htmlSection("matrix", "Scenes × techniques", intro + table.html());
+}
+
+}  // namespace
+
+std::string indexPage(const RunResults& results, const RunComparison& comparison) {
+  std::string body = fmt::format("<h1>GI Bench report: {}</h1>\n", escapeHtml(results.run.suite));
+  if (!results.run.suite_description.empty())
+    body += fmt::format("<p>{}</p>\n", escapeHtml(results.run.suite_description));
+  body += htmlSection("run", "Run", runFacts(results.run));
+  body += htmlSection("comparison", "Against the previous run", comparisonIntro(comparison));
+  body += regressionsSection(results, comparison);
+  body += matrixSection(results, comparison);
+  return htmlPage(fmt::format("GI Bench: {} ({})", results.run.suite, results.run.id), body);
+}
+
+}  // namespace gib::reports

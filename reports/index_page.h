@@ -1,0 +1,14 @@
+// index.html of a run's report: the run's facts, the comparison with the previous run (legend
+// and regressions), and the scene × technique matrix linking to the job pages.
+#pragma once
+
+#include "reports/results.h"
+#include "reports/run_comparison.h"
+
+#include <string>
+
+namespace gib::reports {
+
+std::string indexPage(const RunResults& results, const RunComparison& comparison);
+
+}  // namespace gib::reports

@@ -1,0 +1,23 @@
+// The chart-bearing sections of a job page: per-pass timings (table and bar chart, with the
+// upload, prepare and iterate phases), convergence on log-log axes with the fitted slope, and
+// trends over recent runs. Each returns "" when the job has nothing to show for it.
+#pragma once
+
+#include "reports/html_report.h"
+#include "reports/results.h"
+#include "reports/run_comparison.h"
+
+#include <string>
+
+namespace gib::reports {
+
+std::string timingsSection(const JobResult& job, const std::optional<JobComparison>& compared);
+
+std::string convergenceSection(const JobResult& job, const std::string& primary_metric);
+
+// Trends of the primary metric and the median frame time of the job over context.history (the
+// run itself appended when the history does not end with it); shown from two runs on.
+std::string trendsSection(const RunResults& results, const JobResult& job,
+                          const ReportContext& context);
+
+}  // namespace gib::reports

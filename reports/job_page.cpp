@@ -1,0 +1,139 @@
+#include "reports/job_page.h"
+
+#include "reports/html_text.h"
+#include "reports/image_viewer.h"
+#include "reports/job_charts.h"
+#include "reports/number_format.h"
+#include "reports/pass_timings_view.h"
+#include "reports/report_labels.h"
+#include "reports/report_page.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gib::reports {
+
+namespace {
+
+std::string referenceText(const ReferenceUse& use) {
+  return fmt::format("{}: {} spp, seed {}, {}; {}", use.key, use.spp, use.seed, use.path_class,
+                     use.store_hit ? "from the store"
+                                   : fmt::format("rendered by this run in {} s",
+                                                 formatNumber(use.render_seconds, 3)));
+}
+
+std::string jobFacts(const JobResult& job) {
+  return factsTable({
+      {"case", job.case_name},
+      {"scene", job.scene_hash.empty()
+                    ? job.scene
+                    : fmt::format("{} (hash {})", job.scene, job.scene_hash.substr(0, 12))},
+      {"scene parameters", formatAssignments(job.scene_parameters)},
+      {"technique", job.technique},
+      {"parameters", formatAssignments(job.parameters)},
+      {"image", job.width > 0 ? fmt::format("{} × {} pixels", job.width, job.height) : ""},
+      {"path class", job.path_class},
+      {"reference", referenceText(job.reference)},
+      {"full reference", job.full_reference ? referenceText(*job.full_reference) : ""},
+      {"job time", fmt::format("{} s", formatNumber(job.seconds, 3))},
+  });
+}
+
+std::string metricsSection(const JobResult& job, const std::optional<JobComparison>& compared) {
+  if (job.metrics.empty() && job.metrics_full.empty()) return {};
+  const bool full = job.full_reference.has_value() || !job.metrics_full.empty();
+  std::vector<std::string> names;
+  for (const auto& [name, value] : job.metrics) names.push_back(name);
+  for (const auto& [name, value] : job.metrics_full)
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+
+  std::vector<TableColumn> columns = {
+      {"metric"},
+      {fmt::format("against the reference of its class ({})", job.reference.path_class), true}};
+  if (full) columns.push_back({"against the full reference (all paths)", true});
+  if (compared) columns.push_back({"previous run", true});
+  HtmlTable table(columns);
+  auto value_cell = [&](const NamedValues& values, const std::string& name,
+                        const std::string& change_key) {
+    for (const auto& [key, value] : values)
+      if (key == name)
+        return verdictSpan(formatNumber(value),
+                           compared ? compared->findMetric(change_key) : nullptr);
+    return std::string();
+  };
+  for (const std::string& name : names) {
+    std::vector<std::string> row = {escapeHtml(name), value_cell(job.metrics, name, name)};
+    if (full) row.push_back(value_cell(job.metrics_full, name, "full:" + name));
+    if (compared) {
+      const MetricChange* change = compared->findMetric(name);
+      row.push_back(change ? formatNumber(change->base) : std::string());
+    }
+    table.addRow(row);
+  }
+  const std::string note =
+      "<p class=\"muted\">Against the reference of the technique's own path class: its "
+      "approximation error; against the full reference: also what the class leaves out." +
+      std::string(compared ? " Coloured against the previous run (red: worse beyond tolerance, "
+                             "green: better)."
+                           : "") +
+      "</p>\n";
+  return htmlSection("metrics", "Metrics", note + table.html());
+}
+
+// Our value of a paper quantity: a metric against the class reference, else against the full
+// reference, else a timing pass's median.
+std::optional<double> ourValue(const JobResult& job, const std::string& quantity) {
+  if (const std::optional<double> metric = job.metric(quantity)) return metric;
+  for (const auto& [name, value] : job.metrics_full)
+    if (name == quantity) return value;
+  if (const std::optional<TimingsView> timings = readTimings(job.timings))
+    return passMedianMs(*timings, quantity);
+  return std::nullopt;
+}
+
+std::string paperSection(const RunResults& results, const JobResult& job) {
+  HtmlTable table({{"quantity"},
+                   {"paper", true},
+                   {"ours", true},
+                   {"ours / paper", true},
+                   {"source"},
+                   {"note"}});
+  for (const PaperValue& paper : results.paper) {
+    if (paper.job != job.id) continue;
+    const std::string unit = paper.unit.empty() ? "" : " " + paper.unit;
+    const std::optional<double> ours = ourValue(job, paper.quantity);
+    table.addRow({escapeHtml(paper.quantity), escapeHtml(formatNumber(paper.value) + unit),
+                  ours ? escapeHtml(formatNumber(*ours) + unit) : "not measured",
+                  ours && paper.value != 0 ? formatNumber(*ours / paper.value, 3) : "",
+                  escapeHtml(paper.source), escapeHtml(paper.note)});
+  }
+  if (table.empty()) return {};
+  return htmlSection("paper", "The paper's numbers beside ours",
+                     "<p class=\"muted\">Timings come from different hardware: compare ratios "
+                     "between techniques rather than absolute times.</p>\n" +
+                         table.html());
+}
+
+}  // namespace
+
+std::string jobPage(const std::filesystem::path& run_dir, const RunResults& results,
+                    const JobResult& job, const RunComparison& comparison,
+                    const ReportContext& context) {
+  const std::optional<JobComparison> compared = comparison.job(job.id);
+  std::string body = fmt::format(
+      "<p><a href=\"../index.html\">← {} report</a></p>\n<h1>{}</h1>\n<p class=\"muted\">{} · "
+      "{} · run {}</p>\n",
+      escapeHtml(results.run.suite), escapeHtml(job.id), escapeHtml(job.scene),
+      escapeHtml(job.technique), escapeHtml(results.run.id));
+  body += jobFacts(job);
+  body += metricsSection(job, compared);
+  body += htmlSection("images", "Images", imageViewer(run_dir, job));
+  body += timingsSection(job, compared);
+  body += convergenceSection(job, results.primary_metric);
+  body += paperSection(results, job);
+  body += trendsSection(results, job, context);
+  return htmlPage(fmt::format("{}: {}", job.id, results.run.suite), body);
+}
+
+}  // namespace gib::reports

@@ -1,0 +1,28 @@
+// Short labels and links the report's pages share: a job's sweep label, a run's short commit,
+// parameter lists, and the relative addresses of job pages and job outputs.
+#pragma once
+
+#include "reports/results.h"
+
+#include <string>
+
+namespace gib::reports {
+
+// The swept values of a job id ("cornell-direct/shadow=pcf,light_samples=4" →
+// "shadow=pcf,light_samples=4"); empty for a job without sweeps.
+std::string sweepLabel(const JobResult& job);
+
+// "abc1234" (with "*" when the build was dirty), or "?" when the commit is unknown.
+std::string shortCommit(const RunInfo& run);
+
+// "shadow=pcf, light_samples=4"
+std::string formatAssignments(const Assignments& assignments);
+
+// A job page's file relative to the run directory: "report/<slug>.html".
+std::string jobPageFile(const JobResult& job);
+
+// An output path of JobOutputs (relative to the run directory, or absolute) as a link from a page
+// `depth` directories below the run directory (0: index.html, 1: report/<slug>.html).
+std::string outputHref(const std::string& path, int depth);
+
+}  // namespace gib::reports

@@ -1,0 +1,70 @@
+#include "reports/run_comparison.h"
+
+#include "reports/html_text.h"
+#include "reports/number_format.h"
+
+#include <fmt/format.h>
+
+namespace gib::reports {
+
+namespace {
+
+// Folds one value's verdict into the job's: a regression outweighs an improvement.
+void fold(Verdict& overall, Verdict value) {
+  if (value == Verdict::kRegressed || value == Verdict::kMissing)
+    overall = Verdict::kRegressed;
+  else if (value == Verdict::kImproved && overall == Verdict::kUnchanged)
+    overall = Verdict::kImproved;
+}
+
+std::string spanOf(const std::string& text, std::optional<Verdict> verdict,
+                   std::optional<double> relative_change) {
+  return fmt::format("<span class=\"{}\">{}</span>{}", verdictClass(verdict), escapeHtml(text),
+                     relative_change && *relative_change != 0
+                         ? fmt::format(" <small>({})</small>", formatChange(*relative_change))
+                         : std::string());
+}
+
+}  // namespace
+
+RunComparison::RunComparison(const RunResults& results, const std::optional<RunResults>& previous) {
+  if (!previous) return;
+  previous_run_ = previous->run;
+  diff_ = diffResults(*previous, results);
+  for (const MetricChange& change : diff_->metrics) {
+    JobComparison& job = jobs_[change.job];
+    fold(job.overall, change.verdict);
+    job.metrics.emplace(change.metric, change);
+  }
+  for (const TimingChange& change : diff_->timings) {
+    JobComparison& job = jobs_[change.job];
+    fold(job.overall, change.verdict);
+    job.timing = change;
+  }
+  for (const JobPresence& presence : diff_->presence)
+    if (presence.verdict == Verdict::kAdded) jobs_[presence.job].overall = Verdict::kAdded;
+}
+
+std::optional<JobComparison> RunComparison::job(const std::string& id) const {
+  if (!diff_) return std::nullopt;
+  const auto it = jobs_.find(id);
+  return it == jobs_.end() ? JobComparison{} : it->second;
+}
+
+const char* verdictClass(std::optional<Verdict> verdict) {
+  if (verdict == Verdict::kRegressed || verdict == Verdict::kMissing) return "verdict-regressed";
+  if (verdict == Verdict::kImproved) return "verdict-improved";
+  return "verdict-unchanged";
+}
+
+std::string verdictSpan(const std::string& text, const MetricChange* change) {
+  return change ? spanOf(text, change->verdict, change->relative_change)
+                : spanOf(text, std::nullopt, std::nullopt);
+}
+
+std::string verdictSpan(const std::string& text, const std::optional<TimingChange>& change) {
+  return change ? spanOf(text, change->verdict, change->relative_change)
+                : spanOf(text, std::nullopt, std::nullopt);
+}
+
+}  // namespace gib::reports

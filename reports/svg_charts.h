@@ -1,0 +1,56 @@
+// The report's charts as inline SVG strings: pure functions of their data, with escaped text, a
+// viewBox, no fonts or scripts from outside. Values that cannot be drawn (non-finite; zero or
+// negative on a log axis) are left out and counted in a note on the chart, so a chart never
+// carries "nan" and never hides that something was dropped.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace gib::reports {
+
+// One row of the per-pass timing table (metrics::passTimingsJson): the frame at depth 0, its
+// passes below it.
+struct PassBar {
+  std::string name;
+  int depth = 0;
+  double median_ms = 0, first_quartile_ms = 0, third_quartile_ms = 0;
+};
+
+// Horizontal bars of the median time per pass with whiskers from the first to the third
+// quartile, one row per pass in the given (depth-first) order, names indented by depth.
+std::string passTimingChart(const std::vector<PassBar>& passes);
+
+struct FittedSlope {
+  double slope = 0;
+  double ci95 = 0;  // half-width of the 95% interval; infinite (with two points) is not shown
+};
+
+// Points on log-log axes, and when `fit` is given, the least-squares line with that slope
+// through the centroid of the drawn points in log space (where every least-squares line passes,
+// so no intercept convention is needed) with a label "slope −0.98 ± 0.03".
+struct LogLogPlot {
+  std::string title;
+  std::string x_label, y_label;
+  std::vector<std::pair<double, double>> points;  // (x, y)
+  std::optional<FittedSlope> fit;
+};
+std::string logLogChart(const LogLogPlot& plot);
+
+// A value over runs, oldest first: x is the run index, labelled with `label` (a short commit);
+// the last point (this run) is highlighted.
+struct TrendPoint {
+  std::string label;
+  double value = 0;
+};
+std::string trendChart(std::string_view title, std::string_view y_label,
+                       const std::vector<TrendPoint>& runs);
+
+// The colour bar of the FLIP map: the magma map of image/false_color.h (the FLIP PNGs' map) from
+// 0 to 1, labelled.
+std::string flipColorBar();
+
+}  // namespace gib::reports

@@ -1,0 +1,101 @@
+// The report in a real browser: every page of a synthetic run loads in headless Chromium without
+// console errors, and the page's own self-check finds every image decoded and every chart drawn.
+// The negative tests show that both checks can fail.
+#include "reports/html_report.h"
+
+#include "image/output_files.h"
+#include "support/headless_browser.h"
+#include "support/synthetic_report_run.h"
+#include "support/temp_dir.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string_view>
+
+namespace gib::reports {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Skips without a browser, unless the environment says the browser is part of the test run
+// (scripts/test.sh sets GIB_REQUIRE_BROWSER=1).
+#define GIB_REQUIRE_CHROMIUM(chromium)                                                     \
+  const std::optional<fs::path> chromium = test::findChromium();                           \
+  if (!chromium) {                                                                         \
+    const char* required = std::getenv("GIB_REQUIRE_BROWSER");                             \
+    if (required && std::string_view(required) == "1")                                     \
+      FAIL() << "GIB_REQUIRE_BROWSER=1 but no chromium (/usr/bin/chromium or on PATH); "   \
+                "scripts/install-deps.sh installs it";                                     \
+    GTEST_SKIP() << "no chromium (/usr/bin/chromium or on PATH); scripts/install-deps.sh " \
+                    "installs it";                                                         \
+  }
+
+std::string describe(const test::LoadedPage& page) {
+  return "exit " + std::to_string(page.exit_code) + "\nlog:\n" + page.log;
+}
+
+class HtmlReportBrowser : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    results_ = test::syntheticReportResults();
+    test::writeSyntheticOutputs(run_dir_, results_);
+    ReportContext context;
+    context.previous = test::syntheticReportResults("20261121-100405-smoke-00000000", "fedcba98");
+    context.previous->jobs[1].metrics[0].second = 0.001;  // a regression to colour
+    context.history = {*context.previous};                // two runs: trend charts
+    index_ = writeHtmlReport(run_dir_, results_, context);
+  }
+
+  test::TempDir dir_;
+  fs::path run_dir_ = dir_.path();
+  RunResults results_;
+  fs::path index_;
+};
+
+TEST_F(HtmlReportBrowser, EveryPageLoadsWithoutConsoleErrorsAndPassesItsSelfCheck) {
+  GIB_REQUIRE_CHROMIUM(chromium);
+  std::vector<fs::path> pages = {index_};
+  for (const JobResult& job : results_.jobs)
+    pages.push_back(run_dir_ / "report" / (job.slug + ".html"));
+  for (const fs::path& page : pages) {
+    SCOPED_TRACE(page.string());
+    const test::LoadedPage loaded = test::loadPage(*chromium, page, dir_.path());
+    ASSERT_EQ(loaded.exit_code, 0) << describe(loaded);
+    EXPECT_EQ(test::reportCheck(loaded.dom), "ok") << describe(loaded);
+    EXPECT_EQ(test::consoleProblems(loaded.log), std::vector<std::string>{}) << describe(loaded);
+  }
+}
+
+TEST_F(HtmlReportBrowser, APageWithAMissingPictureFailsItsSelfCheck) {
+  GIB_REQUIRE_CHROMIUM(chromium);
+  const JobResult& job = results_.jobs[1];
+  fs::remove(run_dir_ / job.outputs.flip_png);  // a report copied without one of its images
+  const test::LoadedPage loaded =
+      test::loadPage(*chromium, run_dir_ / "report" / (job.slug + ".html"), dir_.path());
+  ASSERT_EQ(loaded.exit_code, 0) << describe(loaded);
+  const std::string check = test::reportCheck(loaded.dom);
+  EXPECT_EQ(check.rfind("failed: ", 0), 0u) << check;
+  EXPECT_NE(check.find("flip.png"), std::string::npos) << check;
+  // The reader sees it too: the banner is shown with the same message.
+  EXPECT_NE(loaded.dom.find("This page is incomplete"), std::string::npos);
+}
+
+TEST_F(HtmlReportBrowser, ConsoleErrorsOfAPageAreFound) {
+  GIB_REQUIRE_CHROMIUM(chromium);
+  const fs::path page = dir_ / "broken.html";
+  image::writeTextFile(page,
+                       "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><link rel=\"icon\" "
+                       "href=\"data:,\"></head><body><script>console.error('broken report'); "
+                       "undefinedFunction();</script></body></html>");
+  const test::LoadedPage loaded = test::loadPage(*chromium, page, dir_.path());
+  ASSERT_EQ(loaded.exit_code, 0) << describe(loaded);
+  const std::vector<std::string> problems = test::consoleProblems(loaded.log);
+  ASSERT_EQ(problems.size(), 2u) << describe(loaded);
+  EXPECT_NE(problems[0].find("broken report"), std::string::npos);
+  EXPECT_NE(problems[1].find("Uncaught ReferenceError"), std::string::npos);
+  EXPECT_EQ(test::reportCheck(loaded.dom), "");  // no self-check on this page
+}
+
+}  // namespace
+}  // namespace gib::reports

@@ -1,0 +1,77 @@
+#include "support/headless_browser.h"
+
+#include "reports/html_text.h"
+#include "support/run_command.h"
+
+#include <cstdlib>
+#include <sstream>
+#include <string_view>
+
+namespace gib::test {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Real-time limit on one browser run: a page that never settles must not hang the test suite.
+constexpr const char* kBrowserTimeoutSeconds = "60";
+
+}  // namespace
+
+std::optional<fs::path> findChromium() {
+  std::error_code ec;
+  if (fs::is_regular_file("/usr/bin/chromium", ec)) return fs::path("/usr/bin/chromium");
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && fs::is_regular_file(fs::path(dir) / "chromium", ec))
+      return fs::path(dir) / "chromium";
+  return std::nullopt;
+}
+
+LoadedPage loadPage(const fs::path& chromium, const fs::path& page, const fs::path& work_dir) {
+  const fs::path profile = work_dir / "chromium-profile";
+  fs::create_directories(profile);
+  // --virtual-time-budget lets the load event and its scripts run before the DOM is dumped;
+  // --no-sandbox because test containers often lack user namespaces; a private profile and HOME
+  // keep the run from touching the user's.
+  const std::vector<std::string> argv = {"timeout",
+                                         kBrowserTimeoutSeconds,
+                                         chromium.string(),
+                                         "--headless",
+                                         "--no-sandbox",
+                                         "--disable-gpu",
+                                         "--no-first-run",
+                                         "--enable-logging=stderr",
+                                         "--v=0",
+                                         "--virtual-time-budget=5000",
+                                         "--user-data-dir=" + profile.string(),
+                                         "--dump-dom",
+                                         "file://" + reports::urlPath(fs::absolute(page).string())};
+  const CommandResult run = runProgram(argv, work_dir, {"HOME=" + profile.string()});
+  return {run.exit_code, run.out, run.err};
+}
+
+std::string reportCheck(const std::string& dom) {
+  const std::size_t html = dom.find("<html");
+  if (html == std::string::npos) return {};
+  const std::size_t end = dom.find('>', html);
+  const std::string tag = dom.substr(html, end - html);
+  const std::string key = "data-report-check=\"";
+  const std::size_t at = tag.find(key);
+  if (at == std::string::npos) return {};
+  const std::size_t start = at + key.size();
+  return tag.substr(start, tag.find('"', start) - start);
+}
+
+std::vector<std::string> consoleProblems(const std::string& log) {
+  std::vector<std::string> problems;
+  std::stringstream lines(log);
+  for (std::string line; std::getline(lines, line);)
+    if (line.find(":CONSOLE") != std::string::npos || line.find("Uncaught") != std::string::npos ||
+        line.find("Failed to load resource") != std::string::npos)
+      problems.push_back(line);
+  return problems;
+}
+
+}  // namespace gib::test

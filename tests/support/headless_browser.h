@@ -1,0 +1,34 @@
+// Debian's Chromium, headless, for the report tests: load a page from disk, let its scripts run,
+// and read back the DOM and the browser's log.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gib::test {
+
+// /usr/bin/chromium, else `chromium` on PATH; nullopt when neither exists.
+std::optional<std::filesystem::path> findChromium();
+
+struct LoadedPage {
+  int exit_code = -1;
+  std::string dom;  // the serialised DOM after the load event and the scripts
+  std::string log;  // the browser's stderr (console messages are logged there)
+};
+
+// Opens `page` (an absolute path) with a 5-second virtual time budget and a fresh profile under
+// `work_dir`; the browser is killed after a minute of real time.
+LoadedPage loadPage(const std::filesystem::path& chromium, const std::filesystem::path& page,
+                    const std::filesystem::path& work_dir);
+
+// The value of data-report-check on the <html> element of a dumped DOM ("" when absent).
+std::string reportCheck(const std::string& dom);
+
+// Lines of a browser log that show a page problem: console messages (a report page logs none, so
+// any is unexpected: this Chromium logs every level as INFO:CONSOLE), uncaught exceptions and
+// failed loads.
+std::vector<std::string> consoleProblems(const std::string& log);
+
+}  // namespace gib::test

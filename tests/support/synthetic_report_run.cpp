@@ -1,0 +1,211 @@
+#include "support/synthetic_report_run.h"
+
+#include "image/display.h"
+#include "image/image.h"
+
+#include <cmath>
+#include <limits>
+
+namespace gib::test {
+
+namespace {
+
+constexpr int kWidth = 32, kHeight = 24;
+
+struct PassSpec {
+  const char* path;
+  int depth;
+  double median_ms;
+  double calls;
+};
+
+// Frame samples spread ±10% around the median, deterministically.
+std::vector<double> samples(double median, int frames) {
+  std::vector<double> out;
+  for (int i = 0; i < frames; ++i) out.push_back(median * (0.9 + 0.2 * double(i) / (frames - 1)));
+  return out;
+}
+
+reports::JobOutputs outputsOf(const std::string& slug, bool reference_job) {
+  const std::string dir = "jobs/" + slug + "/";
+  reports::JobOutputs out;
+  out.image = dir + "image.exr";
+  out.image_png = dir + "image.png";
+  out.reference_png = dir + "reference.png";
+  out.difference_png = dir + "difference.png";
+  if (!reference_job) {
+    out.flip_png = dir + "flip.png";
+    out.timings_json = dir + "timings.json";
+  }
+  return out;
+}
+
+// Slugs as the suite expansion makes them: '/' → "__", '=' → '-', ',' → "__".
+std::string slugOf(const std::string& id) {
+  std::string slug;
+  for (char c : id) {
+    if (c == '/' || c == ',')
+      slug += "__";
+    else
+      slug += c == '=' ? '-' : c;
+  }
+  return slug;
+}
+
+}  // namespace
+
+nlohmann::ordered_json nestedPassTimings(double scale, int frames) {
+  const PassSpec specs[] = {{"frame", 0, 20.0, 1},
+                            {"frame/gbuffer", 1, 3.0, 1},
+                            {"frame/shadow_maps", 1, 6.0, 4},
+                            {"frame/shadow_maps/cube_faces", 2, 5.0, 24},
+                            {"frame/shading", 1, 10.0, 4}};
+  nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+  for (const PassSpec& spec : specs) {
+    const std::string path = spec.path;
+    const double median = spec.median_ms * scale;
+    passes.push_back({{"name", path.substr(path.rfind('/') + 1)},
+                      {"path", path},
+                      {"depth", spec.depth},
+                      {"median_ms", median},
+                      {"first_quartile_ms", 0.95 * median},
+                      {"third_quartile_ms", 1.05 * median},
+                      {"min_ms", 0.9 * median},
+                      {"max_ms", 1.1 * median},
+                      {"mad_ms", 0.05 * median},
+                      {"gpu_median_ms", nullptr},
+                      {"cpu_median_ms", median},
+                      {"share", spec.median_ms / specs[0].median_ms},
+                      {"calls_per_frame", spec.calls},
+                      {"gpu_ms", nlohmann::ordered_json::array()},
+                      {"cpu_ms", samples(median, frames)}});
+  }
+  return {{"clock", "cpu"},
+          {"clock_description", "CPU wall clock around glFinish (precise mode)"},
+          {"precise", true},
+          {"warmup_frames", 2},
+          {"measured_frames", frames},
+          {"frame_rate_fps", 1000.0 / (20.0 * scale)},
+          {"passes", std::move(passes)}};
+}
+
+reports::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse,
+                                         double frame_scale) {
+  reports::JobResult job;
+  job.id = "cornell-direct/" + sweep;
+  job.slug = slugOf(job.id);
+  job.case_name = "cornell-direct";
+  job.scene = "cornell";
+  job.scene_hash = "5f1e0c2b9a8d7e6f5f1e0c2b9a8d7e6f";
+  job.technique = "direct";
+  job.parameters = {{"shadow", "pcf"}, {"light_samples", "4"}};
+  job.width = kWidth;
+  job.height = kHeight;
+  job.path_class = "LE + LDE";
+  job.reference = {"ref-direct-0001", 256, 0, "LE + LDE", true, 0};
+  job.metrics = {{"relmse", relmse}, {"flip_mean", 0.08}, {"psnr", 31.5}};
+  job.full_reference = reports::ReferenceUse{"ref-all-0001", 256, 0, "all paths", false, 12.5};
+  job.metrics_full = {{"relmse", 4 * relmse}, {"flip_mean", 0.21}, {"psnr", 22.0}};
+  reports::Convergence convergence;
+  convergence.x_label = "iterations";
+  for (int i = 0; i < 5; ++i) {
+    const double x = std::pow(2.0, i);
+    convergence.points.push_back({x, {{"relmse", relmse * 8 / std::pow(x, 0.98)}}, 0.1 * x});
+  }
+  convergence.fit_metric = "relmse";
+  convergence.fit_slope = -0.98;
+  convergence.fit_slope_ci95 = 0.03;
+  job.convergence = convergence;
+  job.timings = nestedPassTimings(frame_scale);
+  job.upload_ms = 4.5;
+  job.prepare_ms = 12.0;
+  job.iterate_ms = 0;
+  job.iterations = 0;
+  job.outputs = outputsOf(job.slug, false);
+  job.seconds = 3.2;
+  job.job_hash = "j-" + job.slug;
+  return job;
+}
+
+reports::RunResults syntheticReportResults(const std::string& run_id, const std::string& commit) {
+  reports::RunResults results;
+  reports::RunInfo& run = results.run;
+  run.id = run_id;
+  run.suite = "smoke";
+  run.suite_description = "Cornell box: reference and direct <shadow maps> & friends";
+  run.suite_file = "suites/smoke.toml";
+  run.started = "2026-11-22T10:04:05Z";
+  run.finished = "2026-11-22T10:06:40Z";
+  run.gibench_version = "0.1.0+" + commit.substr(0, 12);
+  run.git_commit = commit;
+  run.build_type = "Release";
+  run.host = "testhost";
+  run.cpu = "Test CPU @ 3 GHz";
+  run.cpu_cores = 2;
+  run.embree_version = "3.13.5";
+  run.gl_vendor = "Mesa";
+  run.gl_renderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+  run.gl_version = "4.5 (Core Profile) Mesa 22.3.6";
+  run.store = "/tmp/store";
+  results.primary_metric = "relmse";
+
+  reports::JobResult reference;
+  reference.id = "cornell-reference";
+  reference.slug = "cornell-reference";
+  reference.case_name = "cornell-reference";
+  reference.scene = "cornell";
+  reference.technique = "reference";
+  reference.width = kWidth;
+  reference.height = kHeight;
+  reference.path_class = "all paths";
+  reference.reference = {"ref-all-0001", 256, 0, "all paths", false, 12.5};
+  reference.metrics = {{"relmse", 0.0009}, {"flip_mean", 0.02}, {"psnr", 41.0}};
+  reports::Convergence spp;
+  spp.x_label = "spp";
+  for (double x : {16.0, 64.0, 256.0}) spp.points.push_back({x, {{"relmse", 0.2 / x}}, 0.01 * x});
+  spp.fit_metric = "relmse";
+  spp.fit_slope = -1.0;
+  spp.fit_slope_ci95 = 0.01;
+  reference.convergence = spp;
+  reference.timings = nullptr;
+  reference.outputs = outputsOf(reference.slug, true);
+  reference.seconds = 12.5;
+  results.jobs.push_back(reference);
+
+  results.jobs.push_back(syntheticTechniqueJob("shadow=pcf,light_samples=4", 0.0021));
+  reports::JobResult vsm = syntheticTechniqueJob("shadow=vsm,light_samples=4", 0.0035, 1.5);
+  vsm.parameters[0].second = "vsm";
+  vsm.convergence->points.resize(2);
+  vsm.convergence->fit_slope_ci95 = std::numeric_limits<double>::infinity();
+  results.jobs.push_back(vsm);
+
+  const std::string pcf = results.jobs[1].id;
+  results.paper = {{pcf, "relmse", 0.002, "", "Nijasure et al. 2005, Table 1", "64x64 grid"},
+                   {pcf, "frame", 40.0, "ms", "Nijasure et al. 2005, Table 1", "Radeon 9800 Pro"}};
+  return results;
+}
+
+void writeSyntheticOutputs(const std::filesystem::path& run_dir,
+                           const reports::RunResults& results) {
+  for (const reports::JobResult& job : results.jobs) {
+    const reports::JobOutputs& out = job.outputs;
+    int variant = 0;
+    for (const std::string* path :
+         {&out.image_png, &out.reference_png, &out.difference_png, &out.flip_png}) {
+      ++variant;
+      if (path->empty()) continue;
+      std::filesystem::create_directories((run_dir / *path).parent_path());
+      image::Image picture(job.width, job.height);
+      for (int y = 0; y < job.height; ++y)
+        for (int x = 0; x < job.width; ++x) {
+          float* p = picture.pixel(x, y);
+          p[0] = float(x) / float(job.width);
+          p[1] = float(y) / float(job.height);
+          p[2] = 0.25f * float(variant);
+        }
+      image::writePng(run_dir / *path, picture);
+    }
+  }
+}
+
+}  // namespace gib::test

@@ -1,0 +1,34 @@
+// A run directory as `gibench run` leaves it, made without rendering, for the report tests and
+// benchmarks: small PNGs under jobs/<slug>/ and results covering every part of a report.
+#pragma once
+
+#include "reports/results.h"
+
+#include <filesystem>
+#include <string>
+
+namespace gib::test {
+
+// Per-pass timings in the shape of metrics::passTimingsJson: a frame with nested passes
+// (g-buffer; shadow maps with a cube child; shading), every per-frame sample included. `scale`
+// multiplies every time.
+nlohmann::ordered_json nestedPassTimings(double scale = 1.0, int frames = 8);
+
+// A technique job on cornell with metrics against the class and the full reference, nested pass
+// timings, a convergence series over iterations with its fit, and the given output files
+// (jobs/<slug>/…; not written here).
+reports::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse,
+                                         double frame_scale = 1.0);
+
+// The run of three jobs (run id `run_id`, commit `commit`): the Cornell reference (no timings,
+// no FLIP map, convergence over spp), `direct` with shadow=pcf (every output, paper values for
+// relmse and the frame) and `direct` with shadow=vsm (a two-point convergence, so no interval).
+reports::RunResults syntheticReportResults(
+    const std::string& run_id = "20261122-100405-smoke-1a2b3c4d",
+    const std::string& commit = "0123456789abcdef");
+
+// Writes the PNGs every job of `results` lists (a few pixels each) under `run_dir`.
+void writeSyntheticOutputs(const std::filesystem::path& run_dir,
+                           const reports::RunResults& results);
+
+}  // namespace gib::test
