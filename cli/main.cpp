@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addCompareCommand, "compare");
   add(&gib::cli::addRunCommand, "run");
   add(&gib::cli::addDiffCommand, "diff");
+  add(&gib::cli::addHistoryCommand, "history");
   add(&gib::cli::addStoreCommand, "store");
   add(&gib::cli::addReportCommand, "report");
 
