@@ -13,7 +13,10 @@ using CommandRunner = std::function<int()>;
 CommandRunner addListCommand(CLI::App& app);
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
+CommandRunner addRunCommand(CLI::App& app);
 CommandRunner addDiffCommand(CLI::App& app);
+CommandRunner addHistoryCommand(CLI::App& app);
+CommandRunner addStoreCommand(CLI::App& app);
 CommandRunner addReportCommand(CLI::App& app);
 
 }  // namespace gib::cli

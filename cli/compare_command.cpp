@@ -4,7 +4,7 @@
 #include "gib/version.h"
 #include "image/display.h"
 #include "image/exr_io.h"
-#include "image/false_color.h"
+#include "metrics/error_map_display.h"
 #include "metrics/metric_registry.h"
 
 #include <fmt/format.h>
@@ -31,20 +31,6 @@ struct CompareOptions {
   bool reject_outliers = false;
 };
 
-// The colour range a person reads best for each map: FLIP and SSIM have natural ranges, the
-// others go from zero to their 99th percentile so that one firefly does not hide the rest.
-std::pair<float, float> displayRange(const std::string& name, const image::Image& map) {
-  if (name == "flip" || name == "hdrflip") return {0.0f, 1.0f};
-  if (name == "ssim") return {0.0f, 1.0f};
-  std::vector<float> values;
-  for (float v : map.data())
-    if (std::isfinite(v)) values.push_back(v);
-  if (values.empty()) return {0.0f, 1.0f};
-  auto k = values.begin() + std::ptrdiff_t(0.99 * double(values.size() - 1));
-  std::nth_element(values.begin(), k, values.end());
-  return {0.0f, *k > 0 ? *k : 1.0f};
-}
-
 void writeMaps(const fs::path& dir, const metrics::MetricReport& report,
                const image::Metadata& metadata) {
   std::error_code ec;
@@ -56,8 +42,7 @@ void writeMaps(const fs::path& dir, const metrics::MetricReport& report,
     image::Metadata m = metadata;
     m["gibench/metric"] = name;
     image::writeExr(dir / (name + ".exr"), {{name, map}}, m);
-    auto [low, high] = displayRange(name, map);
-    image::writePng(dir / (name + ".png"), image::falseColorWithBar(map, low, high));
+    image::writePng(dir / (name + ".png"), metrics::errorMapForDisplay(name, map));
   }
 }
 

@@ -4,17 +4,44 @@
 #include "realtime/technique.h"
 #include "scene/builtin_scenes.h"
 #include "scene/path_class.h"
+#include "suites/job_expansion.h"
+#include "suites/suite_file.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <memory>
+#include <vector>
 
 namespace gib::cli {
+
+namespace {
+
+// The suites shipped with the source: suites/*.toml, then the figure suites.
+void listSuites() {
+  namespace fs = std::filesystem;
+  const fs::path root(GIB_SUITES_DIR);
+  std::vector<fs::path> files;
+  for (const fs::path& dir : {root, root / "figures"}) {
+    std::error_code ec;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec))
+      if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const fs::path& file : files) {
+    const suites::Suite suite = suites::loadSuiteFile(file);
+    fmt::print("{:<36} {:>4} jobs  {}\n", file.lexically_relative(root.parent_path()).string(),
+               suites::expandSuite(suite).size(), suite.description);
+  }
+}
+
+}  // namespace
 
 CommandRunner addListCommand(CLI::App& app) {
   CLI::App* list = app.add_subcommand("list", "List scenes, techniques, metrics or suites");
   auto what = std::make_shared<std::string>();
-  list->add_option("what", *what, "scenes | techniques | metrics")->required();
+  list->add_option("what", *what, "scenes | techniques | metrics | suites")->required();
   return [what] {
     if (*what == "scenes") {
       for (const scene::BuiltinSceneInfo& info : scene::builtinScenes()) {
@@ -47,7 +74,12 @@ CommandRunner addListCommand(CLI::App& app) {
         fmt::print("{:<10} {}\n", info.name, info.description);
       return 0;
     }
-    throw InputError(fmt::format("cannot list '{}'; choose scenes, techniques or metrics", *what));
+    if (*what == "suites") {
+      listSuites();
+      return 0;
+    }
+    throw InputError(
+        fmt::format("cannot list '{}'; choose scenes, techniques, metrics or suites", *what));
   };
 }
 

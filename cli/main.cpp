@@ -24,7 +24,10 @@ int main(int argc, char** argv) {
   add(&gib::cli::addListCommand, "list");
   add(&gib::cli::addRenderCommand, "render");
   add(&gib::cli::addCompareCommand, "compare");
+  add(&gib::cli::addRunCommand, "run");
   add(&gib::cli::addDiffCommand, "diff");
+  add(&gib::cli::addHistoryCommand, "history");
+  add(&gib::cli::addStoreCommand, "store");
   add(&gib::cli::addReportCommand, "report");
 
   try {

@@ -3,31 +3,19 @@
 #include "cli/render_options.h"
 #include "common/input_error.h"
 #include "common/join.h"
-#include "image/display.h"
 #include "image/exr_io.h"
 #include "image/output_files.h"
 #include "metrics/pass_timing_summary.h"
+#include "realtime/technique_output.h"
 #include "realtime/technique_runner.h"
 #include "reference/reference_output.h"
 #include "scene/builtin_scenes.h"
-#include "scene/output_metadata.h"
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <filesystem>
 
 namespace gib::cli {
-
-namespace {
-
-std::string parametersJson(const ParameterValues& values) {
-  nlohmann::ordered_json json = nlohmann::ordered_json::object();
-  for (const auto& [key, value] : values.canonical()) json[key] = value;
-  return json.dump();
-}
-
-}  // namespace
 
 int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   const rt::TechniqueInfo& info = rt::findTechnique(o.technique);
@@ -59,16 +47,10 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   const std::vector<metrics::PassTimingRow> rows = metrics::summarizeProfile(result.profile);
   const nlohmann::ordered_json timings = metrics::passTimingsJson(result.profile, rows);
 
-  image::Metadata metadata =
-      scene::outputMetadata(scene, info.name, parametersJson(parameters), settings.width,
-                            settings.height, result.path_class);
-  metadata.merge(rt::techniqueRunMetadata(result, settings));
-  metadata["gibench/frame_ms_median"] = fmt::format("{:.3f}", rows.front().reported.median);
+  image::Metadata metadata = rt::techniqueOutputMetadata(scene, info, parameters, settings, result,
+                                                         rows.front().reported.median);
   metadata["gibench/peak_rss_mb"] = fmt::format("{:.1f}", ref::peakResidentMegabytes());
-  metadata["gibench/layers"] = "RGB: radiance of the last measured frame (linear Rec.709)";
-  image::writeExr(out, {{"", result.image}}, metadata);
-  const std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
-  image::writePng(png, result.image);
+  const std::filesystem::path png = rt::writeTechniqueOutputs(out, result, metadata);
   if (!o.timings_json.empty()) image::writeTextFile(o.timings_json, timings.dump(2) + "\n");
 
   fmt::print("scene      {} (hash {})\n", scene.name, metadata.at("gibench/scene_hash"));

@@ -1,17 +1,10 @@
-# The program version recorded in every output: the project version plus the git commit
-# (with "-dirty" for uncommitted changes). Recomputed at configure time.
-execute_process(COMMAND git rev-parse --short=12 HEAD WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-                OUTPUT_VARIABLE GIB_GIT_COMMIT OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-if(NOT GIB_GIT_COMMIT)
-  set(GIB_GIT_COMMIT "unknown")
-endif()
-execute_process(COMMAND git status --porcelain --untracked-files=no WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-                OUTPUT_VARIABLE GIB_GIT_STATUS OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-if(GIB_GIT_STATUS)
-  set(GIB_GIT_DIRTY 1)
-  set(GIB_GIT_DIRTY_SUFFIX "-dirty")
-else()
-  set(GIB_GIT_DIRTY 0)
-  set(GIB_GIT_DIRTY_SUFFIX "")
-endif()
-configure_file(${PROJECT_SOURCE_DIR}/common/version.h.in ${PROJECT_BINARY_DIR}/generated/gib/version.h @ONLY)
+# The program version recorded in every output: the project version plus the git commit (with
+# "-dirty" for uncommitted changes). Written at configure time and refreshed before every build by
+# the gib_version target (cmake/WriteVersion.cmake says why).
+set(GIB_VERSION_ARGS -DGIB_SOURCE_DIR=${PROJECT_SOURCE_DIR} -DGIB_BINARY_DIR=${PROJECT_BINARY_DIR}
+                     -DGIB_PROJECT_VERSION=${PROJECT_VERSION})
+execute_process(COMMAND ${CMAKE_COMMAND} ${GIB_VERSION_ARGS} -P ${PROJECT_SOURCE_DIR}/cmake/WriteVersion.cmake)
+add_custom_target(gib_version
+                  COMMAND ${CMAKE_COMMAND} ${GIB_VERSION_ARGS} -P ${PROJECT_SOURCE_DIR}/cmake/WriteVersion.cmake
+                  BYPRODUCTS ${PROJECT_BINARY_DIR}/generated/gib/version.h
+                  COMMENT "Recording the git commit in gib/version.h")

@@ -20,6 +20,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -109,8 +111,12 @@ class ReferenceStore {
   GcResult collectGarbage(const std::set<std::string>& keep, bool dry_run) const;
 
  private:
+  // The lock that lets one thread at a time render `key` in this process.
+  std::mutex& renderLock(const std::string& key);
+
   std::filesystem::path root_;
   std::mutex mutex_;  // guards per-key render locks
+  std::map<std::string, std::unique_ptr<std::mutex>> render_locks_;
 };
 
 }  // namespace gib::ref

@@ -4,26 +4,34 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <limits>
 
 namespace gib::reports::detail {
 
-nlohmann::ordered_json numberToJson(double value) {
-  if (std::isfinite(value)) return value;
-  if (std::isnan(value)) return "nan";
-  return value > 0 ? "inf" : "-inf";
+JsonField::JsonField(const nlohmann::ordered_json& value, std::string_view source,
+                     std::string_view fix)
+    : value_(&value), source_(source), fix_(fix) {}
+
+JsonField::JsonField(const nlohmann::ordered_json& value, const JsonField& parent,
+                     std::string_view key, std::size_t index)
+    : value_(&value),
+      source_(parent.source_),
+      fix_(parent.fix_),
+      parent_(&parent),
+      key_(key),
+      index_(index) {}
+
+std::string JsonField::path() const {
+  if (!parent_) return {};
+  const std::string path = parent_->path();
+  if (key_.empty()) return fmt::format("{}[{}]", path, index_);
+  return path.empty() ? std::string(key_) : fmt::format("{}.{}", path, key_);
 }
 
-JsonField::JsonField(const nlohmann::ordered_json& value, std::string source, std::string fix)
-    : value_(&value), source_(std::move(source)), fix_(std::move(fix)) {}
-
-JsonField::JsonField(const nlohmann::ordered_json& value, const JsonField& parent, std::string path)
-    : value_(&value), source_(parent.source_), fix_(parent.fix_), path_(std::move(path)) {}
-
 void JsonField::fail(const std::string& problem) const {
-  const std::string where = path_.empty() ? "top level" : path_;
-  throw InputError(fmt::format("{}: {}: {}; {}", source_, where, problem, fix_));
+  const std::string path = this->path();
+  throw InputError(
+      fmt::format("{}: {}: {}; {}", source_, path.empty() ? "top level" : path, problem, fix_));
 }
 
 namespace {
@@ -45,10 +53,9 @@ void JsonField::expect(bool ok, const char* expected) const {
 
 JsonField JsonField::at(const char* key) const {
   expect(value_->is_object(), "an object");
-  const std::string path = path_.empty() ? std::string(key) : path_ + "." + key;
   auto it = value_->find(key);
-  if (it == value_->end()) JsonField(*value_, *this, path).fail("missing");
-  return JsonField(*it, *this, path);
+  if (it == value_->end()) JsonField(*value_, *this, key, 0).fail("missing");
+  return JsonField(*it, *this, key, 0);
 }
 
 bool JsonField::has(const char* key) const {
@@ -75,9 +82,9 @@ double JsonField::asNumber() const {
     if (text == "inf") return std::numeric_limits<double>::infinity();
     if (text == "-inf") return -std::numeric_limits<double>::infinity();
   }
-  fail(fmt::format(
-      "expected a number (or \"nan\", \"inf\", \"-inf\"), found {}",
-      value_->is_string() ? "\"" + value_->get<std::string>() + "\"" : describeType(*value_)));
+  fail(fmt::format("expected a number (or \"nan\", \"inf\", \"-inf\"), found {}",
+                   value_->is_string() ? fmt::format("\"{}\"", value_->get<std::string>())
+                                       : describeType(*value_)));
 }
 
 int JsonField::asInt() const {
@@ -101,15 +108,13 @@ bool JsonField::asBool() const {
 void JsonField::forEachElement(const std::function<void(const JsonField&)>& visit) const {
   expect(value_->is_array(), "an array");
   std::size_t index = 0;
-  for (const auto& element : *value_)
-    visit(JsonField(element, *this, fmt::format("{}[{}]", path_, index++)));
+  for (const auto& element : *value_) visit(JsonField(element, *this, {}, index++));
 }
 
 void JsonField::forEachMember(
     const std::function<void(const std::string& name, const JsonField&)>& visit) const {
   expect(value_->is_object(), "an object");
-  for (const auto& [name, member] : value_->items())
-    visit(name, JsonField(member, *this, path_.empty() ? name : path_ + "." + name));
+  for (const auto& [name, member] : value_->items()) visit(name, JsonField(member, *this, name, 0));
 }
 
 }  // namespace gib::reports::detail

@@ -1,7 +1,7 @@
 // Private to gib_reports: strict reading of the JSON files gibench writes (results.json, job
 // files), so that a truncated or hand-edited file is one clear error naming the field
 // ("<source>: jobs[2].metrics.relmse: expected a number, found a string; <fix>") instead of a
-// silently wrong diff; and numbers that may be non-finite, which JSON cannot hold.
+// silently wrong diff. Numbers may be non-finite (reports/json_number.h).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -10,18 +10,26 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <type_traits>
 
 namespace gib::reports::detail {
 
-// JSON has no NaN or infinity: non-finite numbers are written as the strings "nan", "inf" and
-// "-inf" (what `gibench compare --json` prints too), finite ones as numbers.
-nlohmann::ordered_json numberToJson(double value);
-
-// One value inside a document being read, with where it is, for the error messages.
+// One value inside a document being read, with where it is, for the error messages. A field
+// refers to the field it was read from (the path is only spelled out for an error, so reading a
+// good file allocates nothing for it): read depth first, as a recursive reader does, and do not
+// keep a field beyond its parent.
 class JsonField {
  public:
-  // `fix` ends every error message: what the user can do about a bad file.
-  JsonField(const nlohmann::ordered_json& value, std::string source, std::string fix);
+  // `fix` ends every error message: what the user can do about a bad file. The document,
+  // `source` and `fix` must outlive every field read from it.
+  JsonField(const nlohmann::ordered_json& value, std::string_view source, std::string_view fix);
+  // A temporary document or source would dangle.
+  JsonField(nlohmann::ordered_json&&, std::string_view, std::string_view) = delete;
+  template <typename Source>
+  requires std::is_same_v<Source, std::string> JsonField(const nlohmann::ordered_json&, Source&&,
+                                                         std::string_view)
+  = delete;
 
   // A required member of this object: a gib::InputError when this is not an object or the member
   // is missing.
@@ -31,7 +39,7 @@ class JsonField {
   bool has(const char* key) const;
 
   std::string asString() const;
-  double asNumber() const;  // a number, or "nan", "inf", "-inf"
+  double asNumber() const;  // a number, or "nan", "inf", "-inf" (reports/json_number.h)
   int asInt() const;
   unsigned long long asUnsigned() const;
   bool asBool() const;
@@ -42,18 +50,20 @@ class JsonField {
       const std::function<void(const std::string& name, const JsonField&)>& visit) const;
 
   const nlohmann::ordered_json& json() const { return *value_; }
-  const std::string& path() const { return path_; }
-  const std::string& source() const { return source_; }
+  std::string path() const;  // "jobs[2].metrics.relmse"; empty at the top level
+  std::string_view source() const { return source_; }
   [[noreturn]] void fail(const std::string& problem) const;
 
  private:
-  JsonField(const nlohmann::ordered_json& value, const JsonField& parent, std::string path);
+  JsonField(const nlohmann::ordered_json& value, const JsonField& parent, std::string_view key,
+            std::size_t index);
   void expect(bool ok, const char* expected) const;
 
   const nlohmann::ordered_json* value_;
-  std::string source_;
-  std::string fix_;
-  std::string path_;  // "jobs[2].metrics.relmse"; empty at the top level
+  std::string_view source_, fix_;
+  const JsonField* parent_ = nullptr;  // null at the top level
+  std::string_view key_;               // the member name; empty for an array element
+  std::size_t index_ = 0;              // the array index when key_ is empty
 };
 
 }  // namespace gib::reports::detail

@@ -1,7 +1,7 @@
 #include "reports/results_diff.h"
 
 #include "metrics/timing_statistics.h"
-#include "reports/json_fields.h"
+#include "reports/json_number.h"
 
 #include <fmt/format.h>
 
@@ -9,13 +9,13 @@
 #include <cmath>
 #include <limits>
 #include <string_view>
+#include <unordered_map>
 
 namespace gib::reports {
 
 namespace {
 
 using json = nlohmann::ordered_json;
-using detail::numberToJson;
 
 constexpr std::string_view kFullPrefix = "full:";
 
@@ -157,8 +157,13 @@ DiffReport diffResults(const RunResults& base, const RunResults& next) {
   DiffReport diff;
   diff.base_run = base.run.id;
   diff.next_run = next.run.id;
+  // Jobs by id: RunResults::findJob is a linear search, and nightly runs have a thousand jobs.
+  std::unordered_map<std::string_view, const JobResult*> next_jobs, base_jobs;
+  for (const JobResult& job : next.jobs) next_jobs.emplace(job.id, &job);
+  for (const JobResult& job : base.jobs) base_jobs.emplace(job.id, &job);
   for (const JobResult& base_job : base.jobs) {
-    const JobResult* next_job = next.findJob(base_job.id);
+    auto found = next_jobs.find(base_job.id);
+    const JobResult* next_job = found == next_jobs.end() ? nullptr : found->second;
     if (!next_job) {
       diff.presence.push_back({base_job.id, Verdict::kMissing});
       continue;
@@ -174,7 +179,7 @@ DiffReport diffResults(const RunResults& base, const RunResults& next) {
           diffTiming(base_job.id, base_frames, next_frames, next.tolerances.timing));
   }
   for (const JobResult& next_job : next.jobs)
-    if (!base.findJob(next_job.id)) diff.presence.push_back({next_job.id, Verdict::kAdded});
+    if (!base_jobs.contains(next_job.id)) diff.presence.push_back({next_job.id, Verdict::kAdded});
   return diff;
 }
 

@@ -3,6 +3,8 @@
 #include "common/input_error.h"
 #include "image/output_files.h"
 #include "reports/json_fields.h"
+#include "reports/json_members.h"
+#include "reports/json_number.h"
 
 #include <fmt/format.h>
 
@@ -16,11 +18,122 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 using detail::JsonField;
-using detail::numberToJson;
+using detail::JsonMember;
+using detail::jsonMember;
 
 constexpr const char* kJobSchemaName = "gibench-job";
 constexpr const char* kResultsFix =
     "the file is damaged or was not written by gibench; run the suite again (`gibench run`)";
+
+// The plain members of each struct, in file order.
+
+const std::array<JsonMember<RunInfo>, 22> kRunInfoMembers = {{
+    jsonMember<&RunInfo::id>("id"),
+    jsonMember<&RunInfo::suite>("suite"),
+    jsonMember<&RunInfo::suite_description>("suite_description"),
+    jsonMember<&RunInfo::suite_file>("suite_file"),
+    jsonMember<&RunInfo::suite_hash>("suite_hash"),
+    jsonMember<&RunInfo::started>("started"),
+    jsonMember<&RunInfo::finished>("finished"),
+    jsonMember<&RunInfo::gibench_version>("gibench_version"),
+    jsonMember<&RunInfo::git_commit>("git_commit"),
+    jsonMember<&RunInfo::git_dirty>("git_dirty"),
+    jsonMember<&RunInfo::build_type>("build_type"),
+    jsonMember<&RunInfo::host>("host"),
+    jsonMember<&RunInfo::cpu>("cpu"),
+    jsonMember<&RunInfo::cpu_cores>("cpu_cores"),
+    jsonMember<&RunInfo::embree_version>("embree_version"),
+    jsonMember<&RunInfo::gl_vendor>("gl_vendor"),
+    jsonMember<&RunInfo::gl_renderer>("gl_renderer"),
+    jsonMember<&RunInfo::gl_version>("gl_version"),
+    jsonMember<&RunInfo::gl_device>("gl_device"),
+    jsonMember<&RunInfo::parallel_jobs>("parallel_jobs"),
+    jsonMember<&RunInfo::store>("store"),
+    jsonMember<&RunInfo::complete>("complete"),
+}};
+
+const std::array<JsonMember<Tolerance>, 2> kToleranceMembers = {{
+    jsonMember<&Tolerance::absolute>("absolute"),
+    jsonMember<&Tolerance::relative>("relative"),
+}};
+
+const std::array<JsonMember<TimingTolerance>, 2> kTimingToleranceMembers = {{
+    jsonMember<&TimingTolerance::relative>("relative"),
+    jsonMember<&TimingTolerance::significance>("significance"),
+}};
+
+const std::array<JsonMember<PaperValue>, 6> kPaperValueMembers = {{
+    jsonMember<&PaperValue::job>("job"),
+    jsonMember<&PaperValue::quantity>("quantity"),
+    jsonMember<&PaperValue::value>("value"),
+    jsonMember<&PaperValue::unit>("unit"),
+    jsonMember<&PaperValue::source>("source"),
+    jsonMember<&PaperValue::note>("note"),
+}};
+
+const std::array<JsonMember<ReferenceUse>, 6> kReferenceMembers = {{
+    jsonMember<&ReferenceUse::key>("key"),
+    jsonMember<&ReferenceUse::spp>("spp"),
+    jsonMember<&ReferenceUse::seed>("seed"),
+    jsonMember<&ReferenceUse::path_class>("path_class"),
+    jsonMember<&ReferenceUse::store_hit>("store_hit"),
+    jsonMember<&ReferenceUse::render_seconds>("render_seconds"),
+}};
+
+const std::array<JsonMember<Convergence>, 5> kConvergenceMembers = {{
+    jsonMember<&Convergence::x_label>("x_label"),
+    jsonMember<&Convergence::fit_metric>("fit_metric"),
+    jsonMember<&Convergence::fit_slope>("fit_slope"),
+    jsonMember<&Convergence::fit_intercept>("fit_intercept"),
+    jsonMember<&Convergence::fit_slope_ci95>("fit_slope_ci95"),
+}};
+
+const std::array<JsonMember<Convergence::Point>, 2> kPointMembers = {{
+    jsonMember<&Convergence::Point::x>("x"),
+    jsonMember<&Convergence::Point::seconds>("seconds"),
+}};
+
+const std::array<JsonMember<JobOutputs>, 6> kOutputsMembers = {{
+    jsonMember<&JobOutputs::image>("image"),
+    jsonMember<&JobOutputs::image_png>("image_png"),
+    jsonMember<&JobOutputs::reference_png>("reference_png"),
+    jsonMember<&JobOutputs::difference_png>("difference_png"),
+    jsonMember<&JobOutputs::flip_png>("flip_png"),
+    jsonMember<&JobOutputs::timings_json>("timings_json"),
+}};
+
+const std::array<JsonMember<JobResult>, 15> kJobMembers = {{
+    jsonMember<&JobResult::id>("id"),
+    jsonMember<&JobResult::slug>("slug"),
+    jsonMember<&JobResult::case_name>("case"),
+    jsonMember<&JobResult::scene>("scene"),
+    jsonMember<&JobResult::scene_hash>("scene_hash"),
+    jsonMember<&JobResult::technique>("technique"),
+    jsonMember<&JobResult::width>("width"),
+    jsonMember<&JobResult::height>("height"),
+    jsonMember<&JobResult::path_class>("path_class"),
+    jsonMember<&JobResult::upload_ms>("upload_ms"),
+    jsonMember<&JobResult::prepare_ms>("prepare_ms"),
+    jsonMember<&JobResult::iterate_ms>("iterate_ms"),
+    jsonMember<&JobResult::iterations>("iterations"),
+    jsonMember<&JobResult::seconds>("seconds"),
+    jsonMember<&JobResult::job_hash>("job_hash"),
+}};
+
+// A struct that is nothing but plain members, as a JSON object.
+template <typename Struct, std::size_t N>
+json membersToJson(const Struct& object, const std::array<JsonMember<Struct>, N>& members) {
+  json out = json::object();
+  writeMembers(object, members, out);
+  return out;
+}
+
+template <typename Struct, std::size_t N>
+Struct membersFromJson(const JsonField& field, const std::array<JsonMember<Struct>, N>& members) {
+  Struct object;
+  readMembers(field, members, object);
+  return object;
+}
 
 // Writing
 
@@ -36,80 +149,24 @@ json assignmentsToJson(const Assignments& assignments) {
   return object;
 }
 
-json runInfoToJson(const RunInfo& r) {
-  return {{"id", r.id},
-          {"suite", r.suite},
-          {"suite_description", r.suite_description},
-          {"suite_file", r.suite_file},
-          {"suite_hash", r.suite_hash},
-          {"started", r.started},
-          {"finished", r.finished},
-          {"gibench_version", r.gibench_version},
-          {"git_commit", r.git_commit},
-          {"git_dirty", r.git_dirty},
-          {"build_type", r.build_type},
-          {"host", r.host},
-          {"cpu", r.cpu},
-          {"cpu_cores", r.cpu_cores},
-          {"embree_version", r.embree_version},
-          {"gl_vendor", r.gl_vendor},
-          {"gl_renderer", r.gl_renderer},
-          {"gl_version", r.gl_version},
-          {"gl_device", r.gl_device},
-          {"parallel_jobs", r.parallel_jobs},
-          {"store", r.store},
-          {"complete", r.complete}};
-}
-
-json toleranceToJson(const Tolerance& t) {
-  return {{"absolute", numberToJson(t.absolute)}, {"relative", numberToJson(t.relative)}};
-}
-
 json tolerancesToJson(const Tolerances& t) {
   json metrics = json::object();
-  for (const auto& [name, tolerance] : t.metrics) metrics[name] = toleranceToJson(tolerance);
-  return {{"metric_default", toleranceToJson(t.metric_default)},
+  for (const auto& [name, tolerance] : t.metrics)
+    metrics[name] = membersToJson(tolerance, kToleranceMembers);
+  return {{"metric_default", membersToJson(t.metric_default, kToleranceMembers)},
           {"metrics", std::move(metrics)},
-          {"timing",
-           {{"relative", numberToJson(t.timing.relative)},
-            {"significance", numberToJson(t.timing.significance)}}}};
-}
-
-json paperToJson(const PaperValue& p) {
-  return {{"job", p.job},   {"quantity", p.quantity}, {"value", numberToJson(p.value)},
-          {"unit", p.unit}, {"source", p.source},     {"note", p.note}};
-}
-
-json referenceToJson(const ReferenceUse& r) {
-  return {{"key", r.key},
-          {"spp", r.spp},
-          {"seed", r.seed},
-          {"path_class", r.path_class},
-          {"store_hit", r.store_hit},
-          {"render_seconds", numberToJson(r.render_seconds)}};
+          {"timing", membersToJson(t.timing, kTimingToleranceMembers)}};
 }
 
 json convergenceToJson(const Convergence& c) {
-  json points = json::array();
-  for (const Convergence::Point& p : c.points)
-    points.push_back({{"x", numberToJson(p.x)},
-                      {"metrics", namedValuesToJson(p.metrics)},
-                      {"seconds", numberToJson(p.seconds)}});
-  return {{"x_label", c.x_label},
-          {"points", std::move(points)},
-          {"fit_metric", c.fit_metric},
-          {"fit_slope", numberToJson(c.fit_slope)},
-          {"fit_intercept", numberToJson(c.fit_intercept)},
-          {"fit_slope_ci95", numberToJson(c.fit_slope_ci95)}};
-}
-
-json outputsToJson(const JobOutputs& o) {
-  return {{"image", o.image},
-          {"image_png", o.image_png},
-          {"reference_png", o.reference_png},
-          {"difference_png", o.difference_png},
-          {"flip_png", o.flip_png},
-          {"timings_json", o.timings_json}};
+  json out = membersToJson(c, kConvergenceMembers);
+  json& points = out["points"] = json::array();
+  for (const Convergence::Point& p : c.points) {
+    json point = membersToJson(p, kPointMembers);
+    point["metrics"] = namedValuesToJson(p.metrics);
+    points.push_back(std::move(point));
+  }
+  return out;
 }
 
 // Reading
@@ -130,82 +187,24 @@ Assignments readAssignments(const JsonField& field) {
   return assignments;
 }
 
-RunInfo readRunInfo(const JsonField& f) {
-  RunInfo r;
-  r.id = f.at("id").asString();
-  r.suite = f.at("suite").asString();
-  r.suite_description = f.at("suite_description").asString();
-  r.suite_file = f.at("suite_file").asString();
-  r.suite_hash = f.at("suite_hash").asString();
-  r.started = f.at("started").asString();
-  r.finished = f.at("finished").asString();
-  r.gibench_version = f.at("gibench_version").asString();
-  r.git_commit = f.at("git_commit").asString();
-  r.git_dirty = f.at("git_dirty").asBool();
-  r.build_type = f.at("build_type").asString();
-  r.host = f.at("host").asString();
-  r.cpu = f.at("cpu").asString();
-  r.cpu_cores = f.at("cpu_cores").asInt();
-  r.embree_version = f.at("embree_version").asString();
-  r.gl_vendor = f.at("gl_vendor").asString();
-  r.gl_renderer = f.at("gl_renderer").asString();
-  r.gl_version = f.at("gl_version").asString();
-  r.gl_device = f.at("gl_device").asString();
-  r.parallel_jobs = f.at("parallel_jobs").asInt();
-  r.store = f.at("store").asString();
-  r.complete = f.at("complete").asBool();
-  return r;
-}
-
-Tolerance readTolerance(const JsonField& f) {
-  return {f.at("absolute").asNumber(), f.at("relative").asNumber()};
-}
-
 Tolerances readTolerances(const JsonField& f) {
   Tolerances t;
-  t.metric_default = readTolerance(f.at("metric_default"));
+  t.metric_default = membersFromJson(f.at("metric_default"), kToleranceMembers);
   f.at("metrics").forEachMember([&](const std::string& name, const JsonField& tolerance) {
-    t.metrics[name] = readTolerance(tolerance);
+    t.metrics[name] = membersFromJson(tolerance, kToleranceMembers);
   });
-  const JsonField timing = f.at("timing");
-  t.timing = {timing.at("relative").asNumber(), timing.at("significance").asNumber()};
+  t.timing = membersFromJson(f.at("timing"), kTimingToleranceMembers);
   return t;
 }
 
-PaperValue readPaperValue(const JsonField& f) {
-  return {f.at("job").asString(),  f.at("quantity").asString(), f.at("value").asNumber(),
-          f.at("unit").asString(), f.at("source").asString(),   f.at("note").asString()};
-}
-
-ReferenceUse readReference(const JsonField& f) {
-  ReferenceUse r;
-  r.key = f.at("key").asString();
-  r.spp = f.at("spp").asInt();
-  r.seed = f.at("seed").asUnsigned();
-  r.path_class = f.at("path_class").asString();
-  r.store_hit = f.at("store_hit").asBool();
-  r.render_seconds = f.at("render_seconds").asNumber();
-  return r;
-}
-
 Convergence readConvergence(const JsonField& f) {
-  Convergence c;
-  c.x_label = f.at("x_label").asString();
+  Convergence c = membersFromJson(f, kConvergenceMembers);
   f.at("points").forEachElement([&](const JsonField& p) {
-    c.points.push_back(
-        {p.at("x").asNumber(), readNamedValues(p.at("metrics")), p.at("seconds").asNumber()});
+    Convergence::Point point = membersFromJson(p, kPointMembers);
+    point.metrics = readNamedValues(p.at("metrics"));
+    c.points.push_back(std::move(point));
   });
-  c.fit_metric = f.at("fit_metric").asString();
-  c.fit_slope = f.at("fit_slope").asNumber();
-  c.fit_intercept = f.at("fit_intercept").asNumber();
-  c.fit_slope_ci95 = f.at("fit_slope_ci95").asNumber();
   return c;
-}
-
-JobOutputs readOutputs(const JsonField& f) {
-  return {f.at("image").asString(),         f.at("image_png").asString(),
-          f.at("reference_png").asString(), f.at("difference_png").asString(),
-          f.at("flip_png").asString(),      f.at("timings_json").asString()};
 }
 
 // The timings object is metrics::passTimingsJson, kept whole; checked as far as JobResult's
@@ -222,34 +221,20 @@ void checkTimings(const JsonField& f) {
 }
 
 JobResult readJob(const JsonField& f) {
-  JobResult j;
-  j.id = f.at("id").asString();
-  j.slug = f.at("slug").asString();
-  j.case_name = f.at("case").asString();
-  j.scene = f.at("scene").asString();
-  j.scene_hash = f.at("scene_hash").asString();
-  j.technique = f.at("technique").asString();
+  JobResult j = membersFromJson(f, kJobMembers);
   j.parameters = readAssignments(f.at("parameters"));
   j.scene_parameters = readAssignments(f.at("scene_parameters"));
-  j.width = f.at("width").asInt();
-  j.height = f.at("height").asInt();
-  j.path_class = f.at("path_class").asString();
-  j.reference = readReference(f.at("reference"));
+  j.reference = membersFromJson(f.at("reference"), kReferenceMembers);
   j.metrics = readNamedValues(f.at("metrics"));
-  if (auto full = f.find("full_reference")) j.full_reference = readReference(*full);
+  if (auto full = f.find("full_reference"))
+    j.full_reference = membersFromJson(*full, kReferenceMembers);
   j.metrics_full = readNamedValues(f.at("metrics_full"));
   if (auto convergence = f.find("convergence")) j.convergence = readConvergence(*convergence);
   if (auto timings = f.find("timings")) {
     checkTimings(*timings);
     j.timings = timings->json();
   }
-  j.upload_ms = f.at("upload_ms").asNumber();
-  j.prepare_ms = f.at("prepare_ms").asNumber();
-  j.iterate_ms = f.at("iterate_ms").asNumber();
-  j.iterations = f.at("iterations").asInt();
-  j.outputs = readOutputs(f.at("outputs"));
-  j.seconds = f.at("seconds").asNumber();
-  j.job_hash = f.at("job_hash").asString();
+  j.outputs = membersFromJson(f.at("outputs"), kOutputsMembers);
   return j;
 }
 
@@ -294,40 +279,28 @@ std::string dumpJson(const json& document) {
 }  // namespace
 
 json jobToJson(const JobResult& j) {
-  return {{"id", j.id},
-          {"slug", j.slug},
-          {"case", j.case_name},
-          {"scene", j.scene},
-          {"scene_hash", j.scene_hash},
-          {"technique", j.technique},
-          {"parameters", assignmentsToJson(j.parameters)},
-          {"scene_parameters", assignmentsToJson(j.scene_parameters)},
-          {"width", j.width},
-          {"height", j.height},
-          {"path_class", j.path_class},
-          {"reference", referenceToJson(j.reference)},
-          {"metrics", namedValuesToJson(j.metrics)},
-          {"full_reference", j.full_reference ? referenceToJson(*j.full_reference) : json()},
-          {"metrics_full", namedValuesToJson(j.metrics_full)},
-          {"convergence", j.convergence ? convergenceToJson(*j.convergence) : json()},
-          {"timings", j.timings},
-          {"upload_ms", numberToJson(j.upload_ms)},
-          {"prepare_ms", numberToJson(j.prepare_ms)},
-          {"iterate_ms", numberToJson(j.iterate_ms)},
-          {"iterations", j.iterations},
-          {"outputs", outputsToJson(j.outputs)},
-          {"seconds", numberToJson(j.seconds)},
-          {"job_hash", j.job_hash}};
+  json out = membersToJson(j, kJobMembers);
+  out["parameters"] = assignmentsToJson(j.parameters);
+  out["scene_parameters"] = assignmentsToJson(j.scene_parameters);
+  out["reference"] = membersToJson(j.reference, kReferenceMembers);
+  out["metrics"] = namedValuesToJson(j.metrics);
+  out["full_reference"] =
+      j.full_reference ? membersToJson(*j.full_reference, kReferenceMembers) : json();
+  out["metrics_full"] = namedValuesToJson(j.metrics_full);
+  out["convergence"] = j.convergence ? convergenceToJson(*j.convergence) : json();
+  out["timings"] = j.timings;
+  out["outputs"] = membersToJson(j.outputs, kOutputsMembers);
+  return out;
 }
 
 json resultsToJson(const RunResults& results) {
   json paper = json::array();
-  for (const PaperValue& p : results.paper) paper.push_back(paperToJson(p));
+  for (const PaperValue& p : results.paper) paper.push_back(membersToJson(p, kPaperValueMembers));
   json jobs = json::array();
   for (const JobResult& j : results.jobs) jobs.push_back(jobToJson(j));
   return {{"schema", kResultsSchemaName},
           {"schema_version", kResultsSchemaVersion},
-          {"run", runInfoToJson(results.run)},
+          {"run", membersToJson(results.run, kRunInfoMembers)},
           {"tolerances", tolerancesToJson(results.tolerances)},
           {"primary_metric", results.primary_metric},
           {"paper", std::move(paper)},
@@ -339,11 +312,11 @@ RunResults resultsFromJson(const json& document, const std::string& source) {
   checkSchema(top, kResultsSchemaName);
   RunResults results;
   results.schema_version = kResultsSchemaVersion;
-  results.run = readRunInfo(top.at("run"));
+  results.run = membersFromJson(top.at("run"), kRunInfoMembers);
   results.tolerances = readTolerances(top.at("tolerances"));
   results.primary_metric = top.at("primary_metric").asString();
   top.at("paper").forEachElement(
-      [&](const JsonField& p) { results.paper.push_back(readPaperValue(p)); });
+      [&](const JsonField& p) { results.paper.push_back(membersFromJson(p, kPaperValueMembers)); });
   top.at("jobs").forEachElement([&](const JsonField& j) { results.jobs.push_back(readJob(j)); });
   return results;
 }
@@ -365,7 +338,8 @@ RunResults readResultsFile(const fs::path& path) {
 
 JobResult readJobFile(const fs::path& path) {
   const json document = parseFile(path);
-  const JsonField top(document, path.string(), kResultsFix);
+  const std::string source = path.string();  // outlives the fields, which refer to it
+  const JsonField top(document, source, kResultsFix);
   checkSchema(top, kJobSchemaName);
   return readJob(top);
 }

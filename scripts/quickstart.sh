@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
-# The main job on a fresh machine: install what is missing, build, render the Cornell box
-# reference, and print where the EXR and the PNG are.
+# The README's main job on a fresh Debian bookworm machine: install what is missing, build, run the
+# smoke suite (the Cornell box: reference and `direct`) and write its results and HTML report.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh release
-mkdir -p out
-build/release/cli/gibench render --scene cornell --spp "${GIB_SPP:-256}" --out out/cornell.exr
+build/release/cli/gibench run suites/smoke.toml "$@"

@@ -56,13 +56,7 @@ std::vector<Job> expandSuite(const Suite& suite) {
       job.case_name = c.name;
       job.scene = c.scene;
       job.technique = c.technique;
-      job.width = c.width;
-      job.height = c.height;
-      job.frames = c.frames;
-      job.warmup = c.warmup;
-      job.metrics = c.metrics;
-      job.reference = c.reference;
-      job.checkpoints = c.checkpoints;
+      job.settings = c.settings;
 
       std::string id_suffix;
       std::string slug = slugPart(c.name);

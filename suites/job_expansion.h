@@ -33,12 +33,7 @@ struct Job {
   std::string technique;             // a catalogue name or kReferenceTechnique
   Assignments technique_parameters;  // every key of the case's set, this job's values
 
-  std::optional<int> width, height;  // absent: the scene's default size
-  int frames = 8;
-  int warmup = 2;
-  std::vector<std::string> metrics;
-  ReferenceSettings reference;
-  std::vector<int> checkpoints;
+  RunSettings settings;
 
   bool isReference() const { return technique == kReferenceTechnique; }
 };

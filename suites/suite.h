@@ -4,6 +4,8 @@
 // has been validated against the scene, technique and metric registries.
 #pragma once
 
+#include "reports/results.h"
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -45,6 +47,19 @@ struct SceneSpec {
   std::string nameOrPath() const { return builtin() ? name : file.string(); }
 };
 
+// How a case's jobs are rendered and measured: what [defaults] and a case set besides the scene,
+// technique and their parameters. A job carries its case's settings unchanged.
+struct RunSettings {
+  std::optional<int> width, height;  // absent: the scene's default size
+  int frames = 8;                    // measured frames of a technique job
+  int warmup = 2;                    // frames rendered before them
+  std::vector<std::string> metrics;  // metric registry names, catalogue order
+  ReferenceSettings reference;
+  // Optional series, strictly increasing: spp of a reference case, iterations of an iterative
+  // technique.
+  std::vector<int> checkpoints;
+};
+
 struct Case {
   std::string name;  // unique in the suite; default "<scene>-<technique>"
   int line = 0;      // where the case starts in the suite file, for later messages
@@ -52,12 +67,7 @@ struct Case {
   std::vector<Sweep> scene_parameters;      // `scene_set`, in file order
   std::string technique;                    // a catalogue name or kReferenceTechnique
   std::vector<Sweep> technique_parameters;  // `set`, in file order
-  std::optional<int> width, height;         // absent: the scene's default size
-  int frames = 8;                           // measured frames of a technique job
-  int warmup = 2;                           // frames rendered before them
-  std::vector<std::string> metrics;         // metric registry names, catalogue order
-  ReferenceSettings reference;
-  std::vector<int> checkpoints;  // optional series (spp, iterations, …), strictly increasing
+  RunSettings settings;
 };
 
 struct Suite {
@@ -65,6 +75,11 @@ struct Suite {
   std::string description;
   std::filesystem::path file;  // absolute path of the suite file
   std::vector<Case> cases;     // file order
+  // [tolerances]: how much a metric or the frame time may change before `gibench diff` calls it
+  // a regression; recorded with every run.
+  reports::Tolerances tolerances;
+  // [[paper]]: the source document's numbers, shown beside ours in the report.
+  std::vector<reports::PaperValue> paper;
 };
 
 }  // namespace gib::suites

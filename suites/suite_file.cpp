@@ -1,5 +1,8 @@
 #include "suites/suite_file.h"
 
+#include "suites/job_expansion.h"
+#include "suites/suite_annotations.h"
+
 #include "common/input_error.h"
 #include "common/join.h"
 #include "common/parameters.h"
@@ -56,13 +59,10 @@ std::vector<std::string> withKeys(std::vector<std::string> keys,
 
 // What [defaults] and a case may set, with the nodes that set them for later checks.
 struct Settings {
-  std::optional<int> width, height;
+  Settings() { run.metrics = metrics::parseMetricList("all"); }
+  RunSettings run;
   const toml::node* width_node = nullptr;
   const toml::node* height_node = nullptr;
-  int frames = 8;
-  int warmup = 2;
-  std::vector<std::string> metrics = metrics::parseMetricList("all");
-  ReferenceSettings reference;
   const toml::node* min_bounces_node = nullptr;
   const toml::node* max_bounces_node = nullptr;
 };
@@ -104,17 +104,18 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
                                                        name)),
                           name, fmt::format("[{}]", name), kReferenceKeys);
   if (const toml::node* n = t.find("spp"))
-    s.reference.spp = static_cast<int>(t.integer(*n, "spp", 1, kMaxSpp, "1024"));
+    s.run.reference.spp = static_cast<int>(t.integer(*n, "spp", 1, kMaxSpp, "1024"));
   if (const toml::node* n = t.find("seed"))
-    s.reference.seed = static_cast<unsigned long long>(
+    s.run.reference.seed = static_cast<unsigned long long>(
         t.integer(*n, "seed", 0, std::numeric_limits<long long>::max(), "0"));
   if (const toml::node* n = t.find("min_bounces")) {
-    s.reference.min_bounces = static_cast<int>(t.integer(*n, "min_bounces", 0, kMaxBounces, "0"));
+    s.run.reference.min_bounces =
+        static_cast<int>(t.integer(*n, "min_bounces", 0, kMaxBounces, "0"));
     s.min_bounces_node = n;
   }
   if (const toml::node* n = t.find("max_bounces")) {
     if (const auto* text = n->as_string(); text && text->get() == "unlimited") {
-      s.reference.max_bounces = scene::PathClass::kUnlimited;
+      s.run.reference.max_bounces = scene::PathClass::kUnlimited;
     } else if (!n->is_integer() || n->as_integer()->get() < 0 ||
                n->as_integer()->get() > kMaxBounces) {
       t.errors().fail(*n,
@@ -122,7 +123,7 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
                                   t.path("max_bounces"), kMaxBounces),
                       "write e.g. max_bounces = 1, or max_bounces = \"unlimited\" for every path");
     } else {
-      s.reference.max_bounces = static_cast<int>(n->as_integer()->get());
+      s.run.reference.max_bounces = static_cast<int>(n->as_integer()->get());
     }
     s.max_bounces_node = n;
   }
@@ -131,31 +132,31 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
 // Reads the keys of kSettingKeys present in `t` over `s`.
 void readSettings(const TomlTableReader& t, Settings& s) {
   if (const toml::node* n = t.find("width")) {
-    s.width = static_cast<int>(t.integer(*n, "width", 1, kMaxImageSide, "256"));
+    s.run.width = static_cast<int>(t.integer(*n, "width", 1, kMaxImageSide, "256"));
     s.width_node = n;
   }
   if (const toml::node* n = t.find("height")) {
-    s.height = static_cast<int>(t.integer(*n, "height", 1, kMaxImageSide, "256"));
+    s.run.height = static_cast<int>(t.integer(*n, "height", 1, kMaxImageSide, "256"));
     s.height_node = n;
   }
-  if (const toml::node* n = t.find("metrics")) s.metrics = readMetrics(t, *n);
+  if (const toml::node* n = t.find("metrics")) s.run.metrics = readMetrics(t, *n);
   if (const toml::node* n = t.find("frames"))
-    s.frames = static_cast<int>(t.integer(*n, "frames", 1, kMaxFrames, "8"));
+    s.run.frames = static_cast<int>(t.integer(*n, "frames", 1, kMaxFrames, "8"));
   if (const toml::node* n = t.find("warmup"))
-    s.warmup = static_cast<int>(t.integer(*n, "warmup", 0, kMaxFrames, "2"));
+    s.run.warmup = static_cast<int>(t.integer(*n, "warmup", 0, kMaxFrames, "2"));
   if (const toml::node* n = t.find("reference")) readReference(t, *n, s);
 }
 
 // Checks what only the merged settings of a case can tell.
 void checkSettings(const TomlErrorReporter& errors, const Settings& s) {
-  if (s.width.has_value() != s.height.has_value()) {
-    const toml::node& given = s.width ? *s.width_node : *s.height_node;
+  if (s.run.width.has_value() != s.run.height.has_value()) {
+    const toml::node& given = s.run.width ? *s.width_node : *s.height_node;
     errors.fail(given,
-                fmt::format("{} is given without {}", s.width ? "width" : "height",
-                            s.width ? "height" : "width"),
+                fmt::format("{} is given without {}", s.run.width ? "width" : "height",
+                            s.run.width ? "height" : "width"),
                 "give both width and height, or neither for the scene's own size");
   }
-  const ReferenceSettings& r = s.reference;
+  const ReferenceSettings& r = s.run.reference;
   if (r.min_bounces && r.max_bounces && *r.min_bounces > *r.max_bounces)
     errors.fail(*s.min_bounces_node,
                 fmt::format("reference min_bounces {} is above max_bounces {}", *r.min_bounces,
@@ -361,19 +362,15 @@ Case readCase(const TomlErrorReporter& errors, const toml::table& table, std::si
   Settings settings = defaults;
   readSettings(t, settings);
   checkSettings(errors, settings);
-  c.width = settings.width;
-  c.height = settings.height;
-  c.frames = settings.frames;
-  c.warmup = settings.warmup;
-  c.metrics = settings.metrics;
-  c.reference = settings.reference;
+  c.settings = settings.run;
 
   if (const toml::node* n = t.find("checkpoints")) {
-    c.checkpoints = readCheckpoints(t, *n);
-    if (c.technique == kReferenceTechnique && c.checkpoints.back() > c.reference.spp)
+    c.settings.checkpoints = readCheckpoints(t, *n);
+    if (c.technique == kReferenceTechnique &&
+        c.settings.checkpoints.back() > c.settings.reference.spp)
       errors.fail(n->as_array()->back(),
-                  fmt::format("checkpoint {} is above the reference's {} spp", c.checkpoints.back(),
-                              c.reference.spp),
+                  fmt::format("checkpoint {} is above the reference's {} spp",
+                              c.settings.checkpoints.back(), c.settings.reference.spp),
                   "a reference case's checkpoints are spp counts up to its reference spp");
   }
 
@@ -391,7 +388,7 @@ Suite loadSuiteFile(const std::filesystem::path& path) {
   const TomlErrorReporter errors(path.string());
   const toml::table document = parseTomlFile(errors, path, "suite file");
   const TomlTableReader root(errors, document, "", "the top level of the suite file",
-                             {"name", "description", "defaults", "case"});
+                             {"name", "description", "defaults", "case", "tolerances", "paper"});
 
   Suite suite;
   suite.file = fs::absolute(path).lexically_normal();
@@ -431,6 +428,8 @@ Suite loadSuiteFile(const std::filesystem::path& path) {
     }
     suite.cases.push_back(std::move(c));
   }
+  if (const toml::node* n = root.find("tolerances")) suite.tolerances = readTolerances(root, *n);
+  suite.paper = readPaperValues(root, expandSuite(suite));
   return suite;
 }
 

@@ -10,26 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <string_view>
-
 namespace gib::reports {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Skips without a browser, unless the environment says the browser is part of the test run
-// (scripts/test.sh sets GIB_REQUIRE_BROWSER=1).
-#define GIB_REQUIRE_CHROMIUM(chromium)                                                     \
-  const std::optional<fs::path> chromium = test::findChromium();                           \
-  if (!chromium) {                                                                         \
-    const char* required = std::getenv("GIB_REQUIRE_BROWSER");                             \
-    if (required && std::string_view(required) == "1")                                     \
-      FAIL() << "GIB_REQUIRE_BROWSER=1 but no chromium (/usr/bin/chromium or on PATH); "   \
-                "scripts/install-deps.sh installs it";                                     \
-    GTEST_SKIP() << "no chromium (/usr/bin/chromium or on PATH); scripts/install-deps.sh " \
-                    "installs it";                                                         \
-  }
 
 std::string describe(const test::LoadedPage& page) {
   return "exit " + std::to_string(page.exit_code) + "\nlog:\n" + page.log;

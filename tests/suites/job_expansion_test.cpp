@@ -82,24 +82,24 @@ reference = { max_bounces = 3, seed = 5 }
   EXPECT_EQ(reference.slug, "furnace-reference");
   EXPECT_TRUE(reference.isReference());
   EXPECT_EQ(reference.scene.nameOrPath(), "furnace");
-  EXPECT_THAT(reference.checkpoints, ElementsAre(2, 8));
-  EXPECT_EQ(reference.reference.spp, 64);
+  EXPECT_THAT(reference.settings.checkpoints, ElementsAre(2, 8));
+  EXPECT_EQ(reference.settings.reference.spp, 64);
 
   const Job& direct = jobs[1];
   EXPECT_EQ(direct.id, "box");
   EXPECT_FALSE(direct.isReference());
   EXPECT_EQ(direct.technique, "direct");
-  EXPECT_EQ(direct.width, 40);
-  EXPECT_EQ(direct.height, 30);
-  EXPECT_EQ(direct.frames, 3);
-  EXPECT_EQ(direct.warmup, 0);
-  EXPECT_THAT(direct.metrics, ElementsAre("mse"));
-  EXPECT_EQ(direct.reference.spp, 64);
-  EXPECT_EQ(direct.reference.seed, 5u);
-  EXPECT_EQ(direct.reference.max_bounces, 3);
-  EXPECT_FALSE(direct.reference.min_bounces.has_value());
+  EXPECT_EQ(direct.settings.width, 40);
+  EXPECT_EQ(direct.settings.height, 30);
+  EXPECT_EQ(direct.settings.frames, 3);
+  EXPECT_EQ(direct.settings.warmup, 0);
+  EXPECT_THAT(direct.settings.metrics, ElementsAre("mse"));
+  EXPECT_EQ(direct.settings.reference.spp, 64);
+  EXPECT_EQ(direct.settings.reference.seed, 5u);
+  EXPECT_EQ(direct.settings.reference.max_bounces, 3);
+  EXPECT_FALSE(direct.settings.reference.min_bounces.has_value());
   EXPECT_TRUE(direct.technique_parameters.empty());
-  EXPECT_TRUE(direct.checkpoints.empty());
+  EXPECT_TRUE(direct.settings.checkpoints.empty());
 }
 
 TEST_F(JobExpansionTest, FixedValuesAreAssignedButNotInTheId) {

@@ -121,16 +121,16 @@ TEST_F(SuiteFileTest, CasesInheritTheDefaults) {
   EXPECT_EQ(reference.scene.name, "cornell");
   EXPECT_EQ(reference.scene.nameOrPath(), "cornell");
   EXPECT_EQ(reference.technique, kReferenceTechnique);
-  EXPECT_EQ(reference.width, 64);
-  EXPECT_EQ(reference.height, 48);
-  EXPECT_EQ(reference.frames, 5);
-  EXPECT_EQ(reference.warmup, 1);
-  EXPECT_THAT(reference.metrics, ElementsAre("relmse", "flip"));  // catalogue order
-  EXPECT_EQ(reference.reference.spp, 256);
-  EXPECT_EQ(reference.reference.seed, 7u);
-  EXPECT_FALSE(reference.reference.min_bounces.has_value());
-  EXPECT_FALSE(reference.reference.max_bounces.has_value());
-  EXPECT_THAT(reference.checkpoints, ElementsAre(4, 16, 64));
+  EXPECT_EQ(reference.settings.width, 64);
+  EXPECT_EQ(reference.settings.height, 48);
+  EXPECT_EQ(reference.settings.frames, 5);
+  EXPECT_EQ(reference.settings.warmup, 1);
+  EXPECT_THAT(reference.settings.metrics, ElementsAre("relmse", "flip"));  // catalogue order
+  EXPECT_EQ(reference.settings.reference.spp, 256);
+  EXPECT_EQ(reference.settings.reference.seed, 7u);
+  EXPECT_FALSE(reference.settings.reference.min_bounces.has_value());
+  EXPECT_FALSE(reference.settings.reference.max_bounces.has_value());
+  EXPECT_THAT(reference.settings.checkpoints, ElementsAre(4, 16, 64));
   EXPECT_TRUE(reference.technique_parameters.empty());
 }
 
@@ -139,14 +139,14 @@ TEST_F(SuiteFileTest, CasesOverrideTheDefaultsKeyByKey) {
   const Case& direct = suite.cases[1];
   EXPECT_EQ(direct.name, "direct-sweep");
   EXPECT_EQ(direct.technique, "direct");
-  EXPECT_EQ(direct.width, 32);
-  EXPECT_EQ(direct.height, 32);
-  EXPECT_EQ(direct.frames, 5);
-  EXPECT_EQ(direct.metrics, metrics::parseMetricList("all"));
-  EXPECT_EQ(direct.reference.spp, 512);
-  EXPECT_EQ(direct.reference.seed, 7u);  // from [defaults.reference]
-  EXPECT_EQ(direct.reference.max_bounces, scene::PathClass::kUnlimited);
-  EXPECT_TRUE(direct.checkpoints.empty());
+  EXPECT_EQ(direct.settings.width, 32);
+  EXPECT_EQ(direct.settings.height, 32);
+  EXPECT_EQ(direct.settings.frames, 5);
+  EXPECT_EQ(direct.settings.metrics, metrics::parseMetricList("all"));
+  EXPECT_EQ(direct.settings.reference.spp, 512);
+  EXPECT_EQ(direct.settings.reference.seed, 7u);  // from [defaults.reference]
+  EXPECT_EQ(direct.settings.reference.max_bounces, scene::PathClass::kUnlimited);
+  EXPECT_TRUE(direct.settings.checkpoints.empty());
 }
 
 TEST_F(SuiteFileTest, ParameterValuesAreCanonicalAndInFileOrder) {
@@ -170,12 +170,12 @@ TEST_F(SuiteFileTest, WithoutDefaultsTheBuiltInDefaultsApply) {
   ASSERT_EQ(suite.cases.size(), 1u);
   const Case& c = suite.cases[0];
   EXPECT_EQ(c.name, "furnace-direct");
-  EXPECT_FALSE(c.width.has_value());  // the scene's own size
-  EXPECT_FALSE(c.height.has_value());
-  EXPECT_EQ(c.frames, 8);
-  EXPECT_EQ(c.warmup, 2);
-  EXPECT_EQ(c.metrics, metrics::parseMetricList("all"));
-  EXPECT_EQ(c.reference, ReferenceSettings{});
+  EXPECT_FALSE(c.settings.width.has_value());  // the scene's own size
+  EXPECT_FALSE(c.settings.height.has_value());
+  EXPECT_EQ(c.settings.frames, 8);
+  EXPECT_EQ(c.settings.warmup, 2);
+  EXPECT_EQ(c.settings.metrics, metrics::parseMetricList("all"));
+  EXPECT_EQ(c.settings.reference, ReferenceSettings{});
   EXPECT_TRUE(c.technique_parameters.empty());
 }
 
@@ -199,8 +199,8 @@ max_bounces = 1
   EXPECT_EQ(c.scene_parameters[2].key, "light_position");
   EXPECT_TRUE(c.scene_parameters[2].swept);
   EXPECT_THAT(c.scene_parameters[2].values, ElementsAre("0,4,3", "1,4,3"));
-  EXPECT_EQ(c.reference.min_bounces, 1);
-  EXPECT_EQ(c.reference.max_bounces, 1);
+  EXPECT_EQ(c.settings.reference.min_bounces, 1);
+  EXPECT_EQ(c.settings.reference.max_bounces, 1);
 }
 
 TEST_F(SuiteFileTest, RelativeScenePathsStartAtTheSuiteFilesFolder) {
@@ -349,9 +349,10 @@ TEST_F(SuiteFileTest, UnknownMetricListsTheKnownOnes) {
                                  "list of: mse"));
   EXPECT_THAT(expectErrorAt(replaced(kSuite, "metrics = \"all\"", "metrics = []"), "metrics = []"),
               HasSubstr("case.metrics must not be empty"));
-  EXPECT_THAT(
-      load(replaced(kSuite, "metrics = \"all\"", "metrics = \"ssim,mse\"")).cases[1].metrics,
-      ElementsAre("mse", "ssim"));
+  EXPECT_THAT(load(replaced(kSuite, "metrics = \"all\"", "metrics = \"ssim,mse\""))
+                  .cases[1]
+                  .settings.metrics,
+              ElementsAre("mse", "ssim"));
 }
 
 TEST_F(SuiteFileTest, SizesAndCountsMustBePositive) {
@@ -379,8 +380,8 @@ TEST_F(SuiteFileTest, WidthNeedsHeight) {
               HasSubstr("width is given without height; give both width and height"));
   // A case may override one of the two.
   const Suite suite = load(replaced(kSuite, "width = 32\n", ""));
-  EXPECT_EQ(suite.cases[1].width, 64);
-  EXPECT_EQ(suite.cases[1].height, 32);
+  EXPECT_EQ(suite.cases[1].settings.width, 64);
+  EXPECT_EQ(suite.cases[1].settings.height, 32);
 }
 
 TEST_F(SuiteFileTest, BounceLimits) {
@@ -462,6 +463,69 @@ TEST_F(SuiteFileTest, SceneFileTakesNoSceneSet) {
 }
 
 // The suites of the repository parse, and the nightly suite keeps up with the registries.
+TEST_F(SuiteFileTest, TolerancesDefaultAndPerMetric) {
+  const Suite plain = load(kSuite);
+  EXPECT_EQ(plain.tolerances, reports::Tolerances{});
+  const Suite suite = load(std::string(kSuite) + R"(
+[tolerances]
+default = { relative = 0.02 }
+relmse = { absolute = 1e-4, relative = 0.1 }
+flip_mean = { absolute = 0.001 }
+frame_time = { relative = 0.2, significance = 0.001 }
+)");
+  EXPECT_EQ(suite.tolerances.metric_default.relative, 0.02);
+  EXPECT_EQ(suite.tolerances.forMetric("relmse"), (reports::Tolerance{1e-4, 0.1}));
+  // A key given alone keeps the built-in default of the other.
+  EXPECT_EQ(suite.tolerances.forMetric("flip_mean"),
+            (reports::Tolerance{0.001, reports::Tolerance{}.relative}));
+  EXPECT_EQ(suite.tolerances.forMetric("ssim").relative, 0.02);
+  EXPECT_EQ(suite.tolerances.timing, (reports::TimingTolerance{0.2, 0.001}));
+}
+
+TEST_F(SuiteFileTest, BadTolerances) {
+  const std::string base = std::string(kSuite) + "\n[tolerances]\n";
+  EXPECT_THAT(expectErrorAt(base + "relmes = { relative = 0.1 }\n", "relmes"),
+              HasSubstr("[tolerances] has no metric 'relmes'"));
+  EXPECT_THAT(expectErrorAt(base + "relmse = { relative = -0.1 }\n", "relative = -"),
+              HasSubstr("tolerances.relmse.relative must be in [0, "));
+  EXPECT_THAT(expectErrorAt(base + "relmse = { rel = 0.1 }\n", "rel ="),
+              HasSubstr("unknown key 'rel'"));
+  EXPECT_THAT(expectErrorAt(base + "frame_time = { significance = 1.5 }\n", "significance"),
+              HasSubstr("tolerances.frame_time.significance must be in (0, 1)"));
+  EXPECT_THAT(expectErrorAt(base + "relmse = 0.1\n", "relmse = 0.1"), HasSubstr("must be a table"));
+}
+
+TEST_F(SuiteFileTest, PaperValuesNameJobsOfTheSuite) {
+  const Suite suite = load(std::string(kSuite) + R"(
+[[paper]]
+job = "direct-sweep/shadow=pcf"
+quantity = "frame"
+value = 12.5
+unit = "ms"
+source = "A paper, Table 1"
+note = "an old GPU"
+)");
+  ASSERT_EQ(suite.paper.size(), 1u);
+  EXPECT_EQ(suite.paper[0], (reports::PaperValue{"direct-sweep/shadow=pcf", "frame", 12.5, "ms",
+                                                 "A paper, Table 1", "an old GPU"}));
+  const std::string wrong_job = std::string(kSuite) + R"(
+[[paper]]
+job = "direct-sweep/shadow=vsm"
+quantity = "frame"
+value = 1
+source = "A paper"
+)";
+  EXPECT_THAT(expectErrorAt(wrong_job, "job = \"direct-sweep/shadow=vsm"),
+              HasSubstr("paper.job 'direct-sweep/shadow=vsm' is not a job of this suite"));
+  const std::string no_value = std::string(kSuite) + R"(
+[[paper]]
+job = "direct-sweep/shadow=pcf"
+quantity = "frame"
+source = "A paper"
+)";
+  EXPECT_THAT(errorOf(no_value), HasSubstr("value"));
+}
+
 std::filesystem::path repositorySuite(const char* name) {
   return std::filesystem::path(GIB_SOURCE_DIR) / "suites" / name;
 }
@@ -474,7 +538,9 @@ TEST(RepositorySuites, SmokeSuiteParses) {
   for (const Job& job : jobs) {
     ids.push_back(job.id);
     EXPECT_EQ(job.scene.name, "cornell");
-    EXPECT_LE(*job.width * *job.height * static_cast<long long>(job.reference.spp), 1LL << 25)
+    EXPECT_LE(*job.settings.width * *job.settings.height *
+                  static_cast<long long>(job.settings.reference.spp),
+              1LL << 25)
         << "keep the smoke suite quick";
   }
   EXPECT_THAT(ids, ElementsAre("cornell-reference", "cornell-direct/shadow=hard",

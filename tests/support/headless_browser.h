@@ -2,9 +2,13 @@
 // and read back the DOM and the browser's log.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gib::test {
@@ -32,3 +36,16 @@ std::string reportCheck(const std::string& dom);
 std::vector<std::string> consoleProblems(const std::string& log);
 
 }  // namespace gib::test
+
+// Skips without a browser, unless the environment says the browser is part of the test run
+// (scripts/test.sh sets GIB_REQUIRE_BROWSER=1).
+#define GIB_REQUIRE_CHROMIUM(chromium)                                                     \
+  const std::optional<std::filesystem::path> chromium = ::gib::test::findChromium();       \
+  if (!chromium) {                                                                         \
+    const char* required = std::getenv("GIB_REQUIRE_BROWSER");                             \
+    if (required && std::string_view(required) == "1")                                     \
+      FAIL() << "GIB_REQUIRE_BROWSER=1 but no chromium (/usr/bin/chromium or on PATH); "   \
+                "scripts/install-deps.sh installs it";                                     \
+    GTEST_SKIP() << "no chromium (/usr/bin/chromium or on PATH); scripts/install-deps.sh " \
+                    "installs it";                                                         \
+  }

@@ -1,0 +1,120 @@
+#include "reference/reference_store_entry.h"
+
+#include "common/input_error.h"
+#include "gib/reference_renderer_version.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+namespace gib::ref {
+
+namespace fs = std::filesystem;
+using nlohmann::ordered_json;
+
+namespace {
+
+// Bounce limits as the EXR metadata writes them: "unlimited" rather than INT_MAX.
+ordered_json bounceLimit(int bounces) {
+  return bounces == scene::PathClass::kUnlimited ? ordered_json("unlimited")
+                                                 : ordered_json(bounces);
+}
+
+int readBounceLimit(const ordered_json& value) {
+  if (value.is_string() && value.get<std::string>() == "unlimited")
+    return scene::PathClass::kUnlimited;
+  return value.get<int>();
+}
+
+StoreEntry entryFromJson(const ordered_json& j) {
+  if (j.at("format").get<std::string>() != kStoreEntryFormat)
+    throw std::runtime_error(
+        fmt::format("format '{}' is not {}", j.at("format").dump(), kStoreEntryFormat));
+  StoreEntry e;
+  e.key = j.at("key").get<std::string>();
+  const ordered_json& spec = j.at("spec");
+  e.spec.scene = spec.at("scene").get<std::string>();
+  e.spec.scene_parameters = spec.at("scene_parameters").get<std::vector<std::string>>();
+  e.spec.width = spec.at("width").get<int>();
+  e.spec.height = spec.at("height").get<int>();
+  e.spec.spp = spec.at("spp").get<std::uint32_t>();
+  e.spec.seed = spec.at("seed").get<std::uint64_t>();
+  e.spec.path_class.min_bounces = readBounceLimit(spec.at("min_bounces"));
+  e.spec.path_class.max_bounces = readBounceLimit(spec.at("max_bounces"));
+  e.scene_name = j.at("scene_name").get<std::string>();
+  e.scene_hash = j.at("scene_hash").get<std::string>();
+  e.renderer_version = j.at("renderer_version").get<std::string>();
+  e.gibench_version = j.at("gibench_version").get<std::string>();
+  e.created = j.at("created").get<std::string>();
+  e.render_seconds = j.at("render_seconds").get<double>();
+  return e;
+}
+
+}  // namespace
+
+ordered_json entryToJson(const StoreEntry& e) {
+  return {{"format", kStoreEntryFormat},
+          {"key", e.key},
+          {"spec",
+           {{"scene", e.spec.scene},
+            {"scene_parameters", e.spec.scene_parameters},
+            {"width", e.spec.width},
+            {"height", e.spec.height},
+            {"spp", e.spec.spp},
+            {"seed", e.spec.seed},
+            {"min_bounces", bounceLimit(e.spec.path_class.min_bounces)},
+            {"max_bounces", bounceLimit(e.spec.path_class.max_bounces)}}},
+          {"scene_name", e.scene_name},
+          {"scene_hash", e.scene_hash},
+          {"renderer_version", e.renderer_version},
+          {"gibench_version", e.gibench_version},
+          {"created", e.created},
+          {"render_seconds", e.render_seconds}};
+}
+
+StoreEntry readStoreEntry(const fs::path& dir) {
+  const fs::path file = dir / "entry.json";
+  StoreEntry entry;
+  try {
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error("cannot open it");
+    entry = entryFromJson(ordered_json::parse(in));
+  } catch (const std::exception& e) {
+    throw InputError(fmt::format(
+        "'{}' is not a readable store entry ({}); `gibench store gc` removes damaged entries",
+        file.string(), e.what()));
+  }
+  if (entry.key != dir.filename().string())
+    throw InputError(fmt::format(
+        "'{}' describes key {} but lies in directory {}; `gibench store gc` removes damaged "
+        "entries",
+        file.string(), entry.key, dir.filename().string()));
+  entry.dir = dir;
+  entry.size_bytes = directoryBytes(dir);
+  entry.current = entry.renderer_version == kReferenceRendererVersion;
+  return entry;
+}
+
+std::uint64_t directoryBytes(const fs::path& dir) {
+  std::uint64_t bytes = 0;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code size_ec;
+    const std::uintmax_t size = it->is_regular_file(size_ec) ? it->file_size(size_ec) : 0;
+    if (!size_ec) bytes += size;
+  }
+  return bytes;
+}
+
+RenderSettings renderSettingsOf(const ReferenceSpec& spec, bool progress) {
+  RenderSettings settings;
+  settings.width = spec.width;
+  settings.height = spec.height;
+  settings.spp = spec.spp;
+  settings.seed = spec.seed;
+  settings.path_class = spec.path_class;
+  settings.progress = progress;
+  return settings;
+}
+
+}  // namespace gib::ref

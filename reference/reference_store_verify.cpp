@@ -1,0 +1,82 @@
+// ReferenceStore::verify: a stored reference against a fresh render of the same spec.
+#include "common/input_error.h"
+#include "metrics/z_test.h"
+#include "reference/reference_store.h"
+#include "reference/reference_store_entry.h"
+#include "scene/builtin_scenes.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+
+namespace gib::ref {
+
+namespace {
+
+// Added to the stored seed (the golden-ratio increment of SplitMix64): the fresh render's noise
+// is independent of the stored one's, which the Z-test's combined variance assumes.
+constexpr std::uint64_t kVerifySeedOffset = 0x9e3779b97f4a7c15ull;
+
+void checkVerifySettings(std::uint32_t spp, double significance) {
+  if (spp < 2)
+    throw InputError(fmt::format(
+        "verifying at {} sample(s) per pixel gives the fresh render no variance; use at least 2",
+        spp));
+  if (!(significance > 0 && significance < 1))
+    throw InputError(
+        fmt::format("significance {} is not a probability in (0, 1); 0.01 is usual", significance));
+}
+
+}  // namespace
+
+VerifyResult ReferenceStore::verify(const StoreEntry& entry, std::uint32_t spp, double significance,
+                                    bool progress) const {
+  checkVerifySettings(spp, significance);
+  const auto start = std::chrono::steady_clock::now();
+  VerifyResult result;
+  result.key = entry.key;
+  auto finish = [&] {
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  };
+
+  // Step 1: the scene must still be the one that was rendered, or nothing can be concluded.
+  const scene::Scene scene = scene::loadScene(entry.spec.scene, entry.spec.scene_parameters);
+  if (const std::string hash = scene::hashScene(scene); hash != entry.scene_hash) {
+    result.problem =
+        fmt::format("scene changed since the reference was stored (hash {} then, {} now)",
+                    entry.scene_hash.substr(0, 12), hash.substr(0, 12));
+    return finish();
+  }
+  const std::optional<StoredReference> stored = find(entry.key);
+  if (!stored) {
+    result.problem = "the entry is no longer in the store";
+    return finish();
+  }
+  if (stored->variance.pixelCount() == 0) {
+    result.problem = "stored at 1 sample per pixel: no variance to test against";
+    return finish();
+  }
+
+  // Step 2: a fresh render with independent noise, Z-tested against the stored mean.
+  ReferenceSpec fresh_spec = entry.spec;
+  fresh_spec.spp = spp;
+  fresh_spec.seed = entry.spec.seed + kVerifySeedOffset;
+  const RenderResult fresh = renderReference(scene, renderSettingsOf(fresh_spec, progress));
+  metrics::ZTestOptions options;
+  options.significance = significance;
+  const metrics::ZTestResult z =
+      metrics::zTest(stored->mean, stored->variance, fresh.mean, fresh.variance, options);
+  result.passed = z.passed;
+  result.tested = z.tested;
+  result.failing = z.failing;
+  result.min_p_value = z.min_p_value;
+  if (!z.passed)
+    result.problem =
+        fmt::format("Z-test: {} of {} values fail at family-wise significance {} (min p {:.2g})",
+                    z.failing, z.tested, significance, z.min_p_value);
+  return finish();
+}
+
+}  // namespace gib::ref

@@ -1,0 +1,366 @@
+#include "suites/job_execution.h"
+
+#include "common/content_hash.h"
+#include "common/input_error.h"
+#include "gib/version.h"
+#include "image/display.h"
+#include "image/exr_io.h"
+#include "image/output_files.h"
+#include "metrics/convergence_fit.h"
+#include "metrics/error_map_display.h"
+#include "metrics/metric_registry.h"
+#include "metrics/pass_timing_summary.h"
+#include "realtime/technique_output.h"
+#include "realtime/technique_runner.h"
+#include "reference/progressive_renderer.h"
+#include "reference/reference_output.h"
+#include "scene/builtin_scenes.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+
+namespace gib::suites {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// The convergence series of a reference job is rendered with samples of their own: error against
+// a reference that shares its samples would look better than it is.
+constexpr std::uint64_t kConvergenceSeedOffset = 0x9e3779b97f4a7c15ull;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string relativePath(const fs::path& run_dir, const fs::path& file) {
+  return file.lexically_relative(run_dir).generic_string();
+}
+
+// The class the reference is rendered for: the technique's own unless the suite says otherwise.
+scene::PathClass referenceClass(const PreparedJob& p) {
+  scene::PathClass c = p.path_class;
+  const ReferenceSettings& r = p.job->settings.reference;
+  if (r.min_bounces) c.min_bounces = *r.min_bounces;
+  if (r.max_bounces) c.max_bounces = *r.max_bounces;
+  return c;
+}
+
+ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& path_class) {
+  ref::ReferenceSpec spec;
+  spec.scene = p.job->scene.nameOrPath();
+  spec.scene_parameters = assignmentStrings(p.job->scene_parameters);
+  spec.width = p.width;
+  spec.height = p.height;
+  spec.spp = static_cast<std::uint32_t>(p.job->settings.reference.spp);
+  spec.seed = p.job->settings.reference.seed;
+  spec.path_class = path_class;
+  return spec;
+}
+
+reports::ReferenceUse referenceUse(const ref::StoredReference& stored, double seconds) {
+  reports::ReferenceUse use;
+  use.key = stored.entry.key;
+  use.spp = static_cast<int>(stored.entry.spec.spp);
+  use.seed = stored.entry.spec.seed;
+  use.path_class = scene::describePathClass(stored.entry.spec.path_class);
+  use.store_hit = stored.hit;
+  use.render_seconds = stored.hit ? 0.0 : seconds;
+  return use;
+}
+
+// Fetches (or renders and stores) the reference of `path_class`, saying which on the way.
+ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment& env,
+                                     const scene::PathClass& path_class,
+                                     reports::ReferenceUse* use) {
+  const ref::ReferenceSpec spec = referenceSpec(p, path_class);
+  const std::string what =
+      fmt::format("reference {} ({}x{}, {} spp)", scene::describePathClass(path_class), spec.width,
+                  spec.height, spec.spp);
+  const Clock::time_point start = Clock::now();
+  ref::StoredReference stored = env.store->obtain(p.scene, spec, env.progress);
+  const double seconds = secondsSince(start);
+  if (env.note)
+    env.note(stored.hit ? fmt::format("{}: in the store", what)
+                        : fmt::format("{}: rendered in {:.1f} s", what, seconds));
+  *use = referenceUse(stored, seconds);
+  return stored;
+}
+
+metrics::MetricReport measure(const image::Image& reference, const image::Image& test,
+                              const std::vector<std::string>& names) {
+  return metrics::evaluateMetrics(reference, test, names);
+}
+
+// The metric the convergence fit follows: MSE when measured (for an unbiased renderer its
+// expectation falls exactly as 1/spp, where relMSE's per-pixel ratios are heavy-tailed at low spp),
+// else relMSE, else the first value.
+std::string fitMetric(const reports::NamedValues& values) {
+  for (const char* preferred : {"mse", "relmse"})
+    for (const auto& [name, value] : values)
+      if (name == preferred) return name;
+  return values.empty() ? std::string() : values.front().first;
+}
+
+// Least-squares slope of log(metric) against log(x) over the points where both are positive.
+void fitConvergence(reports::Convergence& convergence) {
+  if (convergence.points.empty()) return;
+  const std::string metric = fitMetric(convergence.points.front().metrics);
+  std::vector<double> x, y;
+  for (const reports::Convergence::Point& point : convergence.points)
+    for (const auto& [name, value] : point.metrics)
+      if (name == metric && point.x > 0 && value > 0 && std::isfinite(value)) {
+        x.push_back(std::log(point.x));
+        y.push_back(std::log(value));
+      }
+  if (x.size() < 2) return;
+  const metrics::LinearFit fit = metrics::fitLine(x, y);
+  convergence.fit_metric = metric;
+  convergence.fit_slope = fit.slope;
+  convergence.fit_intercept = fit.intercept;
+  convergence.fit_slope_ci95 = fit.slope_ci95;
+}
+
+// reference.png (a copy of the store's, so the run directory stands alone), difference.png and
+// flip.png of `test` against `reference`.
+void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
+                           const ref::StoredReference& reference, const image::Image& test,
+                           const metrics::MetricReport& report, reports::JobOutputs& outputs) {
+  const fs::path reference_png = job_dir / "reference.png";
+  image::writePng(reference_png, reference.mean);
+  outputs.reference_png = relativePath(run_dir, reference_png);
+  if (test.width() == 0) return;
+  const fs::path difference_png = job_dir / "difference.png";
+  image::writePng(difference_png,
+                  metrics::errorMapForDisplay(
+                      "difference", metrics::absoluteLuminanceDifference(reference.mean, test)));
+  outputs.difference_png = relativePath(run_dir, difference_png);
+  for (const auto& [name, map] : report.maps)
+    if (name == "flip") {
+      const fs::path flip_png = job_dir / "flip.png";
+      image::writePng(flip_png, metrics::errorMapForDisplay(name, map));
+      outputs.flip_png = relativePath(run_dir, flip_png);
+    }
+}
+
+void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env,
+                                 const image::Image& test, reports::JobResult& result) {
+  if (referenceClass(p) == scene::PathClass{}) return;  // the class reference is the full one
+  reports::ReferenceUse use;
+  const ref::StoredReference full = obtainReference(p, env, scene::PathClass{}, &use);
+  result.full_reference = use;
+  result.metrics_full = measure(full.mean, test, p.job->settings.metrics).values;
+}
+
+// The reference alone: the stored reference, and when the case lists checkpoints an independent
+// render measured against it at each, for the convergence plot.
+void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const fs::path& job_dir,
+                     reports::JobResult& result) {
+  const ref::StoredReference reference =
+      obtainReference(p, env, referenceClass(p), &result.reference);
+  const std::vector<int>& checkpoints = p.job->settings.checkpoints;
+  metrics::MetricReport last_report;
+  image::Image last_mean;
+  if (!checkpoints.empty()) {
+    ref::RenderSettings settings;
+    settings.width = p.width;
+    settings.height = p.height;
+    settings.seed = p.job->settings.reference.seed + kConvergenceSeedOffset;
+    settings.path_class = referenceClass(p);
+    settings.progress = env.progress;
+    reports::Convergence convergence;
+    convergence.x_label = "spp";
+    // One render to the last checkpoint yields every checkpoint that is a pass boundary
+    // (1, 2, 4, …); the others are rendered on their own.
+    std::set<int> pending(checkpoints.begin(), checkpoints.end());
+    auto record = [&](int spp, const image::Image& mean, double seconds) {
+      if (!pending.erase(spp)) return;
+      metrics::MetricReport report = measure(reference.mean, mean, p.job->settings.metrics);
+      convergence.points.push_back({double(spp), report.values, seconds});
+      if (spp == checkpoints.back()) {
+        last_report = std::move(report);
+        last_mean = mean;
+      }
+    };
+    if (env.note)
+      env.note(fmt::format("convergence: independent render to {} spp", checkpoints.back()));
+    settings.spp = static_cast<std::uint32_t>(checkpoints.back());
+    const Clock::time_point start = Clock::now();
+    ref::RenderResult final_render =
+        ref::renderReference(p.scene, settings, [&](std::uint32_t spp, const image::Image& mean) {
+          record(int(spp), mean, secondsSince(start));
+        });
+    for (int spp : std::vector<int>(pending.begin(), pending.end())) {
+      settings.spp = static_cast<std::uint32_t>(spp);
+      const Clock::time_point own_start = Clock::now();
+      const ref::RenderResult own = ref::renderReference(p.scene, settings);
+      record(spp, own.mean, secondsSince(own_start));
+    }
+    std::sort(convergence.points.begin(), convergence.points.end(),
+              [](const auto& a, const auto& b) { return a.x < b.x; });
+    fitConvergence(convergence);
+    result.convergence = std::move(convergence);
+    result.metrics = last_report.values;
+
+    settings.spp = static_cast<std::uint32_t>(checkpoints.back());
+    const fs::path exr = job_dir / "image.exr";
+    image::Metadata metadata = ref::referenceMetadata(p.scene, settings);
+    ref::addRunMetadata(metadata, final_render);
+    const fs::path png = ref::writeReferenceOutputs(exr, final_render, metadata);
+    result.outputs.image = relativePath(env.run_dir, exr);
+    result.outputs.image_png = relativePath(env.run_dir, png);
+  }
+  writeComparisonImages(env.run_dir, job_dir, reference, last_mean, last_report, result.outputs);
+}
+
+rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnvironment& env) {
+  rt::TechniqueRunSettings settings;
+  settings.width = p.width;
+  settings.height = p.height;
+  settings.frames = p.job->settings.frames;
+  settings.warmup_frames = p.job->settings.warmup;
+  settings.iterations =
+      p.job->settings.checkpoints.empty() ? 1 : p.job->settings.checkpoints.back();
+  settings.context = env.gl;
+  return settings;
+}
+
+// An iterative technique's error after each checkpoint's number of iterations (one frame each).
+reports::Convergence techniqueConvergence(const PreparedJob& p, const JobEnvironment& env,
+                                          const image::Image& reference) {
+  reports::Convergence convergence;
+  convergence.x_label = "iterations";
+  for (int iterations : p.job->settings.checkpoints) {
+    rt::TechniqueRunSettings settings = techniqueSettings(p, env);
+    settings.frames = 1;
+    settings.warmup_frames = 0;
+    settings.iterations = iterations;
+    const rt::TechniqueRunResult run =
+        rt::runTechnique(p.scene, *p.technique, *p.parameters, settings);
+    convergence.points.push_back({double(iterations),
+                                  measure(reference, run.image, p.job->settings.metrics).values,
+                                  run.iterate_ms * 1e-3});
+  }
+  fitConvergence(convergence);
+  return convergence;
+}
+
+void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::path& job_dir,
+                     reports::JobResult& result, rt::gl::GlIdentity* gl) {
+  const rt::TechniqueRunSettings settings = techniqueSettings(p, env);
+  if (env.note)
+    env.note(fmt::format("{}: {} warm-up + {} measured frames at {}x{}", p.technique->name,
+                         settings.warmup_frames, settings.frames, p.width, p.height));
+  const rt::TechniqueRunResult run =
+      rt::runTechnique(p.scene, *p.technique, *p.parameters, settings);
+  if (gl) *gl = run.gl;
+  const std::vector<metrics::PassTimingRow> rows = metrics::summarizeProfile(run.profile);
+  result.timings = metrics::passTimingsJson(run.profile, rows);
+  result.upload_ms = run.upload_ms;
+  result.prepare_ms = run.prepare_ms;
+  result.iterate_ms = run.iterate_ms;
+  result.iterations = run.iterations;
+
+  const fs::path exr = job_dir / "image.exr";
+  image::Metadata metadata = rt::techniqueOutputMetadata(
+      p.scene, *p.technique, *p.parameters, settings, run, rows.front().reported.median);
+  const fs::path png = rt::writeTechniqueOutputs(exr, run, metadata);
+  result.outputs.image = relativePath(env.run_dir, exr);
+  result.outputs.image_png = relativePath(env.run_dir, png);
+  const fs::path timings = job_dir / "timings.json";
+  image::writeTextFile(timings, result.timings.dump(2) + "\n");
+  result.outputs.timings_json = relativePath(env.run_dir, timings);
+
+  const ref::StoredReference reference =
+      obtainReference(p, env, referenceClass(p), &result.reference);
+  const metrics::MetricReport report = measure(reference.mean, run.image, p.job->settings.metrics);
+  result.metrics = report.values;
+  writeComparisonImages(env.run_dir, job_dir, reference, run.image, report, result.outputs);
+  measureAgainstFullReference(p, env, run.image, result);
+  if (!p.job->settings.checkpoints.empty())
+    result.convergence = techniqueConvergence(p, env, reference.mean);
+}
+
+std::string jobHash(const PreparedJob& p) {
+  const Job& job = *p.job;
+  ContentHasher hasher;
+  hasher.addString("gibench-job/1");
+  hasher.addString(kVersion);
+  hasher.addString(job.id);
+  hasher.addString(scene::hashScene(p.scene));
+  hasher.addU64(std::uint64_t(p.width));
+  hasher.addU64(std::uint64_t(p.height));
+  hasher.addString(job.technique);
+  if (p.parameters)
+    for (const auto& [key, value] : p.parameters->canonical()) hasher.addString(key + "=" + value);
+  const RunSettings& s = job.settings;
+  for (int value : {s.frames, s.warmup, s.reference.spp, s.reference.min_bounces.value_or(-1),
+                    s.reference.max_bounces.value_or(-1)})
+    hasher.addU64(std::uint64_t(std::int64_t(value)));
+  hasher.addU64(s.reference.seed);
+  for (const std::string& metric : s.metrics) hasher.addString(metric);
+  for (int checkpoint : s.checkpoints) hasher.addU64(std::uint64_t(checkpoint));
+  return hasher.hexDigest();
+}
+
+}  // namespace
+
+PreparedJob prepareJob(const Job& job) {
+  PreparedJob p;
+  p.job = &job;
+  try {
+    p.scene = scene::loadScene(job.scene.nameOrPath(), assignmentStrings(job.scene_parameters));
+    p.width = job.settings.width.value_or(p.scene.default_width);
+    p.height = job.settings.height.value_or(p.scene.default_height);
+    if (!job.isReference()) {
+      p.technique = &rt::findTechnique(job.technique);
+      p.parameters =
+          parseParameters(p.technique->parameters, assignmentStrings(job.technique_parameters),
+                          fmt::format("technique '{}'", job.technique));
+      const std::unique_ptr<rt::Technique> technique = p.technique->create(*p.parameters);
+      p.path_class = technique->pathClass();
+      if (!job.settings.checkpoints.empty() && !technique->iterative())
+        throw InputError(fmt::format(
+            "checkpoints are iteration counts of an iterative technique, and '{}' renders in "
+            "one step; remove checkpoints from case '{}'",
+            job.technique, job.case_name));
+    }
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("job {}: {}", job.id, e.what()));
+  }
+  p.hash = jobHash(p);
+  return p;
+}
+
+reports::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
+                              const fs::path& job_dir, rt::gl::GlIdentity* gl) {
+  const Clock::time_point start = Clock::now();
+  const Job& job = *p.job;
+  reports::JobResult result;
+  result.id = job.id;
+  result.slug = job.slug;
+  result.case_name = job.case_name;
+  result.scene = job.scene.name;
+  result.scene_hash = scene::hashScene(p.scene);
+  result.technique = job.technique;
+  if (p.parameters) result.parameters = p.parameters->canonical();
+  result.scene_parameters = job.scene_parameters;
+  result.width = p.width;
+  result.height = p.height;
+  result.path_class =
+      scene::describePathClass(job.isReference() ? referenceClass(p) : p.path_class);
+  result.job_hash = p.hash;
+  if (job.isReference())
+    runReferenceJob(p, env, job_dir, result);
+  else
+    runTechniqueJob(p, env, job_dir, result, gl);
+  result.seconds = secondsSince(start);
+  return result;
+}
+
+}  // namespace gib::suites

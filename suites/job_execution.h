@@ -1,0 +1,51 @@
+// One job of a run: render (or fetch from the reference store), measure against the reference of
+// the job's path class and against the full reference, time, and write the job's images.
+#pragma once
+
+#include "common/parameters.h"
+#include "realtime/gl/context.h"
+#include "realtime/technique.h"
+#include "reference/reference_store.h"
+#include "reports/results.h"
+#include "scene/scene.h"
+#include "suites/job_expansion.h"
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace gib::suites {
+
+// A job checked and ready to run: everything that can be wrong with its input is found here,
+// before the run writes anything.
+struct PreparedJob {
+  const Job* job = nullptr;
+  scene::Scene scene;
+  int width = 0, height = 0;
+  const rt::TechniqueInfo* technique = nullptr;  // null for a reference job
+  std::optional<ParameterValues> parameters;     // of the technique
+  scene::PathClass path_class;                   // of the technique; every path for the reference
+  std::string hash;  // what makes a recorded result of this job still valid (resume)
+};
+
+// Loads the scene, parses the parameters, checks that checkpoints go with an iterative technique.
+// Throws gib::InputError naming the job.
+PreparedJob prepareJob(const Job& job);
+
+struct JobEnvironment {
+  ref::ReferenceStore* store = nullptr;
+  std::filesystem::path run_dir;  // output paths are recorded relative to it
+  rt::gl::ContextOptions gl;
+  bool progress = false;  // progress bars on a terminal
+  // Called with short notes of what the job is doing ("reference: rendering 128x128 at 1024 spp").
+  std::function<void(const std::string&)> note;
+};
+
+// Runs the job and writes its files into `job_dir`. The GL identity of a technique job is
+// returned through `gl` when given.
+reports::JobResult executeJob(const PreparedJob& job, const JobEnvironment& environment,
+                              const std::filesystem::path& job_dir,
+                              rt::gl::GlIdentity* gl = nullptr);
+
+}  // namespace gib::suites

@@ -1,0 +1,33 @@
+// The parts of a suite file that are about judging and presenting results rather than rendering:
+// [tolerances] (how much may change before `gibench diff` calls it a regression) and [[paper]]
+// (the source document's numbers, shown beside ours in a figure suite's report).
+//
+//   [tolerances]
+//   default = { relative = 0.05 }                 # every metric value without its own entry
+//   relmse = { absolute = 1e-4, relative = 0.1 }  # a metric value name (relmse, flip_mean, …)
+//   frame_time = { relative = 0.1, significance = 0.01 }
+//
+//   [[paper]]
+//   job = "cornell-direct/shadow=pcf"   # a job id of this suite
+//   quantity = "frame"                  # a metric value name or a timing pass name
+//   value = 12.5
+//   unit = "ms"                         # optional
+//   source = "Nijasure et al. 2005, Table 1"
+//   note = "Radeon 9800 Pro"            # optional
+#pragma once
+
+#include "common/toml_reader.h"
+#include "reports/results.h"
+#include "suites/job_expansion.h"
+
+#include <vector>
+
+namespace gib::suites {
+
+reports::Tolerances readTolerances(const TomlTableReader& root, const toml::node& node);
+
+// Checks that every entry names a job of `jobs`.
+std::vector<reports::PaperValue> readPaperValues(const TomlTableReader& root,
+                                                 const std::vector<Job>& jobs);
+
+}  // namespace gib::suites

@@ -1,0 +1,294 @@
+// `gibench run` end to end on a tiny suite: results, store reuse, resume after an interruption,
+// and the bad inputs that must stop a run before it writes anything.
+#include "support/run_command.h"
+#include "reports/results.h"
+#include "reports/results_json.h"
+#include "support/temp_dir.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+extern char** environ;
+
+namespace gib {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+// Small enough for seconds per run: a 32x32 Cornell box, a 1024-spp reference with a convergence
+// series, and the direct technique with two shadow filters.
+constexpr const char* kTinySuite = R"(name = "tiny"
+description = "a tiny suite for the tests"
+
+[defaults]
+width = 32
+height = 32
+metrics = ["mse", "relmse", "flip"]
+frames = 2
+warmup = 0
+
+[defaults.reference]
+spp = 1024
+
+[tolerances]
+relmse = { relative = 0.1 }
+
+[[case]]
+scene = "cornell"
+technique = "reference"
+checkpoints = [4, 16, 64]
+
+[[case]]
+scene = "cornell"
+technique = "direct"
+set = { shadow = ["hard", "pcf"], light_samples = 2 }
+
+[[paper]]
+job = "cornell-direct/shadow=pcf"
+quantity = "frame"
+value = 3.5
+unit = "ms"
+source = "a made-up paper"
+)";
+
+void writeFile(const fs::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class RunCommandTest : public ::testing::Test {
+ protected:
+  RunCommandTest() { writeFile(suite(), kTinySuite); }
+
+  fs::path suite() const { return dir_ / "tiny.toml"; }
+  fs::path store() const { return dir_ / "store"; }
+
+  test::CommandResult run(const fs::path& out, std::vector<std::string> more = {}) const {
+    std::vector<std::string> args = {"run",        suite().string(), "--out",
+                                     out.string(), "--store",        store().string()};
+    args.insert(args.end(), more.begin(), more.end());
+    return test::runGibench(args, dir_.path());
+  }
+
+  test::TempDir dir_;
+};
+
+TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
+  const fs::path out = dir_ / "run1";
+  const test::CommandResult r = run(out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const reports::RunResults results = reports::readResultsFile(out / "results.json");
+  ASSERT_EQ(results.jobs.size(), 3u);
+  EXPECT_EQ(results.run.suite, "tiny");
+  EXPECT_TRUE(results.run.complete);
+  EXPECT_EQ(results.primary_metric, "relmse");
+  EXPECT_EQ(results.tolerances.forMetric("relmse").relative, 0.1);
+  ASSERT_EQ(results.paper.size(), 1u);
+
+  const reports::JobResult& reference = results.jobs[0];
+  EXPECT_EQ(reference.id, "cornell-reference");
+  ASSERT_TRUE(reference.convergence.has_value());
+  ASSERT_EQ(reference.convergence->points.size(), 3u);
+  EXPECT_EQ(reference.convergence->fit_metric, "mse");
+  // The expected MSE of an independent render falls as 1/spp (a slope of −1 on log-log axes)
+  // while the reference's own variance is negligible; three points of a 1024-pixel image scatter
+  // about that, hence the wide bounds.
+  EXPECT_LT(reference.convergence->fit_slope, -0.6);
+  EXPECT_GT(reference.convergence->fit_slope, -1.5);
+  EXPECT_FALSE(reference.reference.store_hit);
+
+  for (const std::size_t i : {1u, 2u}) {
+    const reports::JobResult& direct = results.jobs[i];
+    EXPECT_EQ(direct.technique, "direct");
+    EXPECT_EQ(direct.path_class, "LE + LDE");
+    EXPECT_EQ(direct.reference.path_class, "LE + LDE");
+    ASSERT_TRUE(direct.full_reference.has_value());
+    // The full reference is the reference job's: rendered once, then found in the store.
+    EXPECT_EQ(direct.full_reference->key, results.jobs[0].reference.key);
+    EXPECT_TRUE(direct.full_reference->store_hit);
+    ASSERT_TRUE(direct.metric("relmse").has_value());
+    EXPECT_TRUE(direct.frameMedianMs().has_value());
+    // Direct light leaves out indirect light: farther from the full reference than its own.
+    // (relMSE, not MSE: MSE is dominated by the bright emitter's edge pixels at this size.)
+    auto relmse = [](const reports::NamedValues& values) {
+      for (const auto& [name, value] : values)
+        if (name == "relmse") return value;
+      return -1.0;
+    };
+    EXPECT_GT(relmse(direct.metrics_full), 2 * relmse(direct.metrics));
+    // Its class reference is another store entry than the reference job's full one.
+    EXPECT_NE(direct.reference.key, reference.reference.key);
+    for (const std::string& file :
+         {direct.outputs.image, direct.outputs.image_png, direct.outputs.reference_png,
+          direct.outputs.difference_png, direct.outputs.flip_png, direct.outputs.timings_json})
+      EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
+  }
+  EXPECT_EQ(results.jobs[1].id, "cornell-direct/shadow=hard");
+  EXPECT_EQ(results.jobs[2].id, "cornell-direct/shadow=pcf");
+  EXPECT_TRUE(fs::is_regular_file(out / "index.html"));
+  EXPECT_EQ(test::countLines(readFile(out / "results.csv")), 4);  // header + 3 jobs
+  EXPECT_TRUE(fs::is_regular_file(store() / "history.sqlite"));
+  EXPECT_THAT(r.out, HasSubstr("report     "));
+  EXPECT_THAT(r.err, HasSubstr("[3/3] cornell-direct/shadow=pcf: done"));
+}
+
+TEST_F(RunCommandTest, ALaterRunReusesTheStoredReferences) {
+  ASSERT_EQ(run(dir_ / "first").exit_code, 0);
+  const test::CommandResult r = run(dir_ / "second");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const reports::RunResults first = reports::readResultsFile(dir_ / "first");
+  const reports::RunResults second = reports::readResultsFile(dir_ / "second");
+  EXPECT_NE(first.run.id, second.run.id);
+  for (std::size_t i = 0; i < second.jobs.size(); ++i) {
+    EXPECT_TRUE(second.jobs[i].reference.store_hit) << second.jobs[i].id;
+    // Same inputs, same references, same measurements.
+    EXPECT_EQ(second.jobs[i].metrics, first.jobs[i].metrics) << second.jobs[i].id;
+  }
+  EXPECT_THAT(r.err, Not(HasSubstr("rendered in")));
+}
+
+TEST_F(RunCommandTest, ParallelJobsMeasureTheSame) {
+  ASSERT_EQ(run(dir_ / "serial").exit_code, 0);
+  const test::CommandResult r = run(dir_ / "parallel", {"--jobs", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const reports::RunResults serial = reports::readResultsFile(dir_ / "serial");
+  const reports::RunResults parallel = reports::readResultsFile(dir_ / "parallel");
+  ASSERT_EQ(parallel.jobs.size(), serial.jobs.size());
+  for (std::size_t i = 0; i < serial.jobs.size(); ++i)
+    EXPECT_EQ(parallel.jobs[i].metrics, serial.jobs[i].metrics) << serial.jobs[i].id;
+  EXPECT_EQ(parallel.run.parallel_jobs, 2);
+}
+
+// Starts gibench, kills it (SIGKILL: no chance to tidy up) as soon as the first job has recorded
+// its result, and checks that a rerun with the same --out finishes the run, skipping that job.
+TEST_F(RunCommandTest, AnInterruptedRunIsResumed) {
+  const fs::path out = dir_ / "interrupted";
+  const std::vector<std::string> args = {GIB_GIBENCH_PATH, "run",     suite().string(), "--out",
+                                         out.string(),     "--store", store().string()};
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  const std::string log = (dir_ / "interrupted.log").string();
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  const fs::path first_result = out / "jobs" / "cornell-reference" / "result.json";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(first_result) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(fs::exists(first_result)) << readFile(log);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be interrupted";
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+  const reports::JobResult recorded = reports::readJobFile(first_result);
+
+  const test::CommandResult r = run(out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("resuming run"));
+  EXPECT_THAT(r.err, HasSubstr("cornell-reference: finished by an earlier attempt, skipped"));
+  EXPECT_THAT(r.out, HasSubstr("2 run, 1 finished earlier"));
+  const reports::RunResults results = reports::readResultsFile(out);
+  ASSERT_EQ(results.jobs.size(), 3u);
+  EXPECT_EQ(results.jobs[0], recorded);
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(out))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+        << "left behind: " << entry.path();
+}
+
+TEST_F(RunCommandTest, ARerunOfAFinishedRunRunsNothing) {
+  const fs::path out = dir_ / "done";
+  ASSERT_EQ(run(out).exit_code, 0);
+  const reports::RunResults before = reports::readResultsFile(out);
+  const test::CommandResult r = run(out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("0 run, 3 finished earlier"));
+  const reports::RunResults after = reports::readResultsFile(out);
+  EXPECT_EQ(after.run.id, before.run.id);
+  EXPECT_EQ(after.jobs, before.jobs);
+}
+
+TEST_F(RunCommandTest, OnlyAndListSelectJobs) {
+  const test::CommandResult list =
+      test::runGibench({"run", suite().string(), "--list", "--only", "*/shadow=pcf"}, dir_.path());
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  EXPECT_EQ(list.out, "cornell-direct/shadow=pcf\n");
+  const fs::path out = dir_ / "subset";
+  const test::CommandResult r = run(out, {"--only", "cornell-direct/*"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const reports::RunResults results = reports::readResultsFile(out);
+  ASSERT_EQ(results.jobs.size(), 2u);
+  EXPECT_FALSE(results.run.complete);
+}
+
+TEST_F(RunCommandTest, BadInputStopsBeforeAnythingIsWritten) {
+  auto expectRefused = [&](const std::vector<std::string>& more, const std::string& message,
+                           const fs::path& out) {
+    const test::CommandResult r = run(out, more);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_THAT(r.err, HasSubstr(message));
+    EXPECT_EQ(test::countLines(r.err), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out / "run-state.json")) << out;
+  };
+  expectRefused({"--jobs", "0"}, "--jobs 0 runs nothing", dir_ / "a");
+  expectRefused({"--only", "nothing*"}, "--only 'nothing*' matches no job", dir_ / "b");
+  writeFile(dir_ / "file", "x");
+  expectRefused({}, "is a file; give a directory", dir_ / "file");
+  fs::create_directories(dir_ / "busy");
+  writeFile(dir_ / "busy" / "notes.txt", "mine");
+  expectRefused({}, "is not empty and holds no gibench run", dir_ / "busy");
+
+  writeFile(suite(), std::string(kTinySuite) + R"(
+[[case]]
+name = "bad"
+scene = "cornell"
+technique = "direct"
+checkpoints = [1, 2]
+)");
+  expectRefused({}, "checkpoints are iteration counts of an iterative technique", dir_ / "c");
+
+  const test::CommandResult missing =
+      test::runGibench({"run", (dir_ / "nope.toml").string()}, dir_.path());
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.err, HasSubstr("suite file not found"));
+}
+
+TEST_F(RunCommandTest, ARunDirectoryBelongsToOneSuite) {
+  const fs::path out = dir_ / "mine";
+  ASSERT_EQ(run(out, {"--only", "cornell-reference"}).exit_code, 0);
+  writeFile(suite(), std::string(kTinySuite).replace(0, 13, "name = \"other\""));
+  const test::CommandResult r = run(out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("holds a run of suite 'tiny', not 'other'"));
+}
+
+TEST_F(RunCommandTest, ListSuitesShowsTheShippedOnes) {
+  const test::CommandResult r = test::runGibench({"list", "suites"}, dir_.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("suites/smoke.toml"));
+  EXPECT_THAT(r.out, HasSubstr("suites/nightly.toml"));
+}
+
+}  // namespace
+}  // namespace gib

@@ -1,0 +1,343 @@
+// The reference store: content-addressed keys, hits and misses, concurrent writers, interrupted
+// writes, garbage collection and verification against a fresh render.
+#include "reference/reference_store.h"
+
+#include "common/input_error.h"
+#include "reference/reference_store_entry.h"
+#include "scene/builtin_scenes.h"
+#include "support/reference_store_fixtures.h"
+#include "support/temp_dir.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace gib::ref {
+namespace {
+
+namespace fs = std::filesystem;
+using test::obtainReference;
+using test::smallReferenceSpec;
+using test::TempDir;
+using ::testing::HasSubstr;
+
+bool bitIdentical(const image::Image& a, const image::Image& b) {
+  return a.sameSize(b) && std::memcmp(a.data().data(), b.data().data(), a.data().size_bytes()) == 0;
+}
+
+std::string readText(const fs::path& path) {
+  std::stringstream s;
+  s << std::ifstream(path).rdbuf();
+  return s.str();
+}
+
+// The names in <root>/references.
+std::set<std::string> storeDirectories(const fs::path& root) {
+  std::set<std::string> names;
+  for (const fs::directory_entry& d : fs::directory_iterator(root / "references"))
+    names.insert(d.path().filename().string());
+  return names;
+}
+
+// A directory as an interrupted write leaves it, last written `age` ago.
+fs::path makeStagingDebris(const fs::path& root, const std::string& name,
+                           std::chrono::minutes age) {
+  const fs::path dir = root / "references" / name;
+  test::writeFile(dir / "reference.exr", "half an EXR");
+  fs::last_write_time(dir, fs::file_time_type::clock::now() - age);
+  return dir;
+}
+
+TEST(ReferenceStore, MissRendersAndStoresThenHitLoadsTheSamePixels) {
+  TempDir dir;
+  const ReferenceSpec spec = smallReferenceSpec();
+  const StoredReference first = obtainReference(dir.path(), spec);
+  EXPECT_FALSE(first.hit);
+  const fs::path entry_dir = dir / "references" / first.entry.key;
+  EXPECT_EQ(first.entry.dir, entry_dir);
+  for (const char* name : {"reference.exr", "reference.png", "entry.json"})
+    EXPECT_TRUE(fs::is_regular_file(entry_dir / name)) << name;
+  EXPECT_TRUE(first.entry.current);
+  EXPECT_GT(first.entry.size_bytes, 0u);
+  EXPECT_EQ(first.mean.width(), 24);
+  EXPECT_EQ(first.variance.width(), 24);
+  const std::string entry_json = readText(entry_dir / "entry.json");
+
+  // A second store on the same root (a later run): found, not rendered.
+  const StoredReference second = obtainReference(dir.path(), spec);
+  EXPECT_TRUE(second.hit);
+  EXPECT_EQ(second.entry.key, first.entry.key);
+  EXPECT_EQ(second.entry.created, first.entry.created);
+  EXPECT_EQ(readText(entry_dir / "entry.json"), entry_json);
+  EXPECT_TRUE(bitIdentical(second.mean, first.mean));
+  EXPECT_TRUE(bitIdentical(second.variance, first.variance));
+  EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{first.entry.key});
+}
+
+TEST(ReferenceStore, EntryRecordsWhatWasRenderedAndHow) {
+  TempDir dir;
+  ReferenceSpec spec = smallReferenceSpec("cornell", 16, 4);
+  spec.seed = 9;
+  spec.path_class.max_bounces = 1;
+  const StoredReference stored = obtainReference(dir.path(), spec);
+  const std::optional<StoredReference> found = ReferenceStore(dir.path()).find(stored.entry.key);
+  ASSERT_TRUE(found);
+  const StoreEntry& e = found->entry;
+  EXPECT_EQ(e.spec.scene, "cornell");
+  EXPECT_EQ(e.spec.width, 16);
+  EXPECT_EQ(e.spec.spp, 4u);
+  EXPECT_EQ(e.spec.seed, 9u);
+  EXPECT_EQ(e.spec.path_class, spec.path_class);
+  EXPECT_EQ(e.scene_name, "cornell");
+  EXPECT_EQ(e.scene_hash, scene::hashScene(scene::loadScene("cornell")));
+  EXPECT_EQ(e.renderer_version.size(), 16u);
+  EXPECT_EQ(e.created.size(), std::string("2026-11-22T07:55:31.123Z").size());
+  EXPECT_GT(e.render_seconds, 0);
+}
+
+TEST(ReferenceStore, KeyChangesWithEverySettingAndIsStable) {
+  const scene::Scene cornell = scene::loadScene("cornell");
+  const ReferenceSpec base = smallReferenceSpec();
+  const std::string key = referenceKey(cornell, base);
+  EXPECT_EQ(key.size(), 32u);
+  EXPECT_EQ(referenceKey(scene::loadScene("cornell"), base), key);
+
+  std::set<std::string> keys = {key};
+  auto addVariant = [&](const scene::Scene& scene, auto change) {
+    ReferenceSpec spec = base;
+    change(spec);
+    keys.insert(referenceKey(scene, spec));
+  };
+  addVariant(cornell, [](ReferenceSpec& s) { s.width = 25; });
+  addVariant(cornell, [](ReferenceSpec& s) { s.height = 25; });
+  addVariant(cornell, [](ReferenceSpec& s) { s.spp = 65; });
+  addVariant(cornell, [](ReferenceSpec& s) { s.seed = 1; });
+  addVariant(cornell, [](ReferenceSpec& s) { s.path_class.min_bounces = 1; });
+  addVariant(cornell, [](ReferenceSpec& s) { s.path_class.max_bounces = 1; });
+  addVariant(scene::loadScene("furnace"), [](ReferenceSpec&) {});
+  addVariant(scene::loadScene("cloud"), [](ReferenceSpec&) {});
+  addVariant(scene::loadScene("cloud", {"albedo=0.8"}), [](ReferenceSpec&) {});
+  EXPECT_EQ(keys.size(), 10u);
+
+  // Width and height are not interchangeable.
+  ReferenceSpec wide = base, tall = base;
+  wide.width = 32;
+  tall.height = 32;
+  EXPECT_NE(referenceKey(cornell, wide), referenceKey(cornell, tall));
+}
+
+TEST(ReferenceStore, TwoThreadsObtainingOneKeyRenderOnce) {
+  TempDir dir;
+  ReferenceStore store(dir.path());
+  const scene::Scene cornell = scene::loadScene("cornell");
+  const ReferenceSpec spec = smallReferenceSpec();
+  StoredReference a, b;
+  std::thread first([&] { a = store.obtain(cornell, spec); });
+  std::thread second([&] { b = store.obtain(cornell, spec); });
+  first.join();
+  second.join();
+  EXPECT_NE(a.hit, b.hit) << "exactly one of the two renders";
+  EXPECT_EQ(a.entry.created, b.entry.created);
+  EXPECT_TRUE(bitIdentical(a.mean, b.mean));
+  EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{a.entry.key});
+}
+
+TEST(ReferenceStore, TwoStoresOnOneRootEndWithOneWholeEntry) {
+  // Two stores on one root behave like two processes: no shared lock, so both may render; the
+  // rename into place lets exactly one entry survive and leaves no temporary directory.
+  TempDir dir;
+  const ReferenceSpec spec = smallReferenceSpec();
+  StoredReference a, b;
+  std::thread first([&] { a = obtainReference(dir.path(), spec); });
+  std::thread second([&] { b = obtainReference(dir.path(), spec); });
+  first.join();
+  second.join();
+  EXPECT_TRUE(bitIdentical(a.mean, b.mean));
+  EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{a.entry.key});
+  EXPECT_EQ(ReferenceStore(dir.path()).list().size(), 1u);
+}
+
+TEST(ReferenceStore, ListsNewestFirstAndMarksEntriesOfAnotherRenderer) {
+  TempDir dir;
+  const StoredReference older = obtainReference(dir.path(), smallReferenceSpec("cornell", 16, 4));
+  const StoredReference newer = obtainReference(dir.path(), smallReferenceSpec("furnace", 16, 4));
+  test::setStoredRendererVersion(older.entry, "0123456789abcdef");
+  const std::vector<StoreEntry> entries = ReferenceStore(dir.path()).list();
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].key, newer.entry.key);
+  EXPECT_TRUE(entries[0].current);
+  EXPECT_EQ(entries[1].key, older.entry.key);
+  EXPECT_FALSE(entries[1].current);
+  EXPECT_EQ(entries[1].renderer_version, "0123456789abcdef");
+}
+
+TEST(ReferenceStore, InterruptedWriteIsIgnoredAndCollected) {
+  TempDir dir;
+  const StoredReference stored = obtainReference(dir.path(), smallReferenceSpec("cornell", 16, 4));
+  const fs::path old_debris = makeStagingDebris(dir.path(), ".tmp-" + stored.entry.key + "-4242-0",
+                                                std::chrono::minutes(120));
+  // A younger one may belong to a process writing right now: gc leaves it.
+  const fs::path young = makeStagingDebris(dir.path(), ".tmp-" + stored.entry.key + "-4243-0",
+                                           std::chrono::minutes(1));
+  ReferenceStore store(dir.path());
+  EXPECT_EQ(store.list().size(), 1u);
+  EXPECT_TRUE(store.find(stored.entry.key));
+  EXPECT_FALSE(store.find(".tmp-" + stored.entry.key + "-4242-0"));
+
+  const GcResult gc = store.collectGarbage({stored.entry.key}, /*dry_run=*/false);
+  EXPECT_TRUE(gc.removed.empty());
+  EXPECT_EQ(gc.debris, std::vector<fs::path>{old_debris});
+  EXPECT_EQ(gc.bytes, std::string("half an EXR").size());
+  EXPECT_FALSE(fs::exists(old_debris));
+  EXPECT_TRUE(fs::exists(young));
+  EXPECT_TRUE(store.find(stored.entry.key));
+}
+
+TEST(ReferenceStore, GarbageCollectionKeepsTheKeepSet) {
+  TempDir dir;
+  const StoredReference kept = obtainReference(dir.path(), smallReferenceSpec("cornell", 16, 4));
+  const StoredReference unused = obtainReference(dir.path(), smallReferenceSpec("furnace", 16, 4));
+  ReferenceStore store(dir.path());
+
+  const GcResult dry = store.collectGarbage({kept.entry.key}, /*dry_run=*/true);
+  ASSERT_EQ(dry.removed.size(), 1u);
+  EXPECT_EQ(dry.removed[0].key, unused.entry.key);
+  EXPECT_EQ(dry.bytes, unused.entry.size_bytes);
+  EXPECT_EQ(store.list().size(), 2u) << "a dry run removes nothing";
+
+  const GcResult gc = store.collectGarbage({kept.entry.key}, /*dry_run=*/false);
+  EXPECT_EQ(gc.bytes, dry.bytes);
+  EXPECT_FALSE(store.find(unused.entry.key));
+  EXPECT_TRUE(store.find(kept.entry.key));
+  EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{kept.entry.key});
+}
+
+TEST(ReferenceStore, DamagedEntryIsNamedByListReplacedByObtainAndCollected) {
+  TempDir dir;
+  const ReferenceSpec spec = smallReferenceSpec("cornell", 16, 4);
+  const StoredReference stored = obtainReference(dir.path(), spec);
+  test::writeFile(stored.entry.dir / "entry.json", "{ not json");
+  ReferenceStore store(dir.path());
+  try {
+    store.list();
+    ADD_FAILURE() << "list() accepted a damaged entry.json";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(stored.entry.key + "/entry.json"));
+  }
+  EXPECT_EQ(store.collectGarbage({}, /*dry_run=*/true).debris,
+            std::vector<fs::path>{stored.entry.dir});
+
+  const StoredReference again = store.obtain(scene::loadScene("cornell"), spec);
+  EXPECT_FALSE(again.hit);
+  EXPECT_TRUE(bitIdentical(again.mean, stored.mean));
+  EXPECT_EQ(store.list().size(), 1u);
+  EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{stored.entry.key});
+}
+
+TEST(ReferenceStore, UnwritableRootIsAnInputErrorBeforeRendering) {
+  TempDir dir;
+  test::writeFile(dir / "a_file", "not a directory");
+  ReferenceStore store(dir / "a_file" / "store");
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    // 512×512 at 1024 spp would take minutes: the error must come first.
+    store.obtain(scene::loadScene("cornell"), smallReferenceSpec("cornell", 512, 1024));
+    ADD_FAILURE() << "obtain() wrote into a path under a file";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("cannot write the reference store"));
+    EXPECT_THAT(e.what(), HasSubstr("--store"));
+  }
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+}
+
+TEST(ReferenceStore, FindTakesOnlyKeys) {
+  TempDir dir;
+  ReferenceStore store(dir.path());
+  EXPECT_FALSE(store.find("0123456789abcdef0123456789abcdef"));
+  EXPECT_FALSE(store.find("../x"));
+  EXPECT_FALSE(store.find(""));
+  EXPECT_TRUE(store.list().empty()) << "a store that was never written is empty";
+}
+
+// Verification runs at family-wise significance 0.01: an intact entry fails with probability
+// at most 1% (Šidák over the 24·24·3 values). Renders are deterministic, so each test's outcome
+// is fixed; the margin was checked over ten seeds (smallest p-value 3e-4 against the per-value
+// level 5.8e-6).
+constexpr double kSignificance = 0.01;
+constexpr std::uint32_t kVerifySpp = 64;
+
+TEST(ReferenceStoreVerify, PassesOnAnUntouchedEntry) {
+  TempDir dir;
+  const StoredReference stored = obtainReference(dir.path(), smallReferenceSpec());
+  const VerifyResult r = ReferenceStore(dir.path()).verify(stored.entry, kVerifySpp, kSignificance);
+  EXPECT_TRUE(r.passed) << r.problem;
+  EXPECT_EQ(r.key, stored.entry.key);
+  EXPECT_EQ(r.tested, 24u * 24u * 3u);
+  EXPECT_EQ(r.failing, 0u);
+  EXPECT_GT(r.seconds, 0);
+}
+
+TEST(ReferenceStoreVerify, FailsWhenTheStoredMeanIsTwentyPercentHigh) {
+  // What a changed renderer looks like: the stored image 20% brighter than the current one.
+  TempDir dir;
+  const StoredReference stored =
+      obtainReference(dir.path(), smallReferenceSpec("cornell", 24, 256));
+  test::scaleStoredMean(stored.entry, 1.2f);
+  const VerifyResult r = ReferenceStore(dir.path()).verify(stored.entry, 256, kSignificance);
+  EXPECT_FALSE(r.passed);
+  EXPECT_THAT(r.problem, HasSubstr("Z-test"));
+  // Far from the edge: the renders are deterministic and 213 of the 1728 values fail (a 20% bias
+  // is one to three standard errors at 256 spp; the per-value threshold is 4.5).
+  EXPECT_GT(r.failing, 50u);
+}
+
+TEST(ReferenceStoreVerify, ReportsAChangedScene) {
+  TempDir dir;
+  test::writeFile(dir / "scene" / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  auto writeScene = [&](const char* diffuse) {
+    test::writeFile(dir / "scene" / "quad.toml", std::string(R"([camera]
+position = [0.5, 0.5, 2.0]
+look_at = [0.5, 0.5, 0.0]
+vertical_fov_deg = 45.0
+
+[materials.grey]
+type = "lambert"
+diffuse = )") + diffuse + R"(
+
+[[meshes]]
+file = "quad.obj"
+material = "grey"
+
+[sky]
+radiance = [1.0, 1.0, 1.0]
+)");
+  };
+  writeScene("[0.5, 0.5, 0.5]");
+  const ReferenceSpec spec = smallReferenceSpec((dir / "scene" / "quad.toml").string(), 16, 8);
+  const StoredReference stored = obtainReference(dir / "store", spec);
+  ReferenceStore store(dir / "store");
+  EXPECT_TRUE(store.verify(stored.entry, 8, kSignificance).passed);
+
+  writeScene("[0.6, 0.5, 0.5]");
+  const VerifyResult r = store.verify(stored.entry, 8, kSignificance);
+  EXPECT_FALSE(r.passed);
+  EXPECT_THAT(r.problem, HasSubstr("scene changed since the reference was stored"));
+}
+
+TEST(ReferenceStoreVerify, RejectsTooFewSamplesAndABadSignificance) {
+  TempDir dir;
+  const StoredReference stored = obtainReference(dir.path(), smallReferenceSpec("cornell", 16, 4));
+  ReferenceStore store(dir.path());
+  EXPECT_THROW(store.verify(stored.entry, 1, kSignificance), InputError);
+  EXPECT_THROW(store.verify(stored.entry, 8, 0.0), InputError);
+  EXPECT_THROW(store.verify(stored.entry, 8, 1.5), InputError);
+}
+
+}  // namespace
+}  // namespace gib::ref
