@@ -8,6 +8,7 @@
 #include "reference/reference_store.h"
 #include "reports/history_db.h"
 #include "reports/html_report.h"
+#include "reports/report_context.h"
 #include "reports/results_csv.h"
 #include "reports/results_json.h"
 #include "suites/job_execution.h"
@@ -287,9 +288,7 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   if (!options.history_db.empty()) {
     reports::HistoryDatabase db = reports::HistoryDatabase::open(options.history_db);
     outcome.history_row = db.append(run);
-    context.previous = db.previousRun(suite.name, run.run.started);
-    context.history =
-        db.recentRuns(suite.name, run.run.started, static_cast<std::size_t>(options.trend_runs));
+    context = reports::loadReportContext(db, run, static_cast<std::size_t>(options.trend_runs));
   }
   outcome.report = reports::writeHtmlReport(dir.path(), run, context);
   return outcome;
