@@ -30,9 +30,10 @@ std::string timingsIntro(const TimingsView& view, const std::optional<JobCompari
   if (view.frame_rate_fps) intro += fmt::format(" ({} fps)", formatNumber(*view.frame_rate_fps, 3));
   if (compared && compared->timing) {
     const TimingChange& t = *compared->timing;
-    intro += fmt::format(
-        "; previous run {} ms, now {} (Mann–Whitney p = {})", formatNumber(t.base_median_ms),
-        verdictSpan(formatChange(t.relative_change), compared->timing), formatNumber(t.p_value, 2));
+    intro += fmt::format("; previous run {} ms, now {} (Mann–Whitney p = {})",
+                         formatNumber(t.base_median_ms),
+                         verdictSpan(formatNumber(t.next_median_ms) + " ms", compared->timing),
+                         formatNumber(t.p_value, 2));
   }
   return intro + ".</p>\n";
 }
