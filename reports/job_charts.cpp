@@ -148,15 +148,23 @@ std::string trendsSection(const RunResults& results, const JobResult& job,
   for (const RunResults& run : context.history) runs.push_back(&run);
   if (runs.empty() || runs.back()->run.id != results.run.id) runs.push_back(&results);
   if (runs.size() < 2) return {};
-  const std::string& primary = results.primary_metric;
-  const std::vector<TrendPoint> metric =
-      trendOf(runs, job.id, [&](const JobResult& j) { return j.metric(primary); });
+  // Every metric value of the job (against its class reference), the primary one first, then the
+  // frame time.
+  std::vector<std::string> names;
+  if (!results.primary_metric.empty() && job.metric(results.primary_metric))
+    names.push_back(results.primary_metric);
+  for (const auto& [name, value] : job.metrics)
+    if (name != results.primary_metric) names.push_back(name);
+  std::string charts;
+  for (const std::string& name : names) {
+    const std::vector<TrendPoint> metric =
+        trendOf(runs, job.id, [&](const JobResult& j) { return j.metric(name); });
+    if (anyFinite(metric))
+      charts +=
+          trendChart(fmt::format("{} over the last {} runs", name, runs.size()), name, metric);
+  }
   const std::vector<TrendPoint> frame =
       trendOf(runs, job.id, [](const JobResult& j) { return j.frameMedianMs(); });
-  std::string charts;
-  if (!primary.empty() && anyFinite(metric))
-    charts +=
-        trendChart(fmt::format("{} over the last {} runs", primary, runs.size()), primary, metric);
   if (anyFinite(frame))
     charts += trendChart(fmt::format("Median frame time over the last {} runs", runs.size()), "ms",
                          frame);

@@ -206,6 +206,9 @@ TEST_F(HtmlReport, TrendChartsFollowTheJobOverTheHistory) {
   ASSERT_NE(html.find("id=\"trends\""), std::string::npos);
   EXPECT_NE(html.find("relmse over the last 4 runs"), std::string::npos);  // history + this run
   EXPECT_NE(html.find("Median frame time over the last 4 runs"), std::string::npos);
+  ASSERT_GE(results_.jobs[1].metrics.size(), 2u);
+  for (const auto& [name, value] : results_.jobs[1].metrics)  // a trend of each metric
+    EXPECT_NE(html.find(name + " over the last 4 runs"), std::string::npos) << name;
   for (const char* commit : {">abcdef0<", ">abcdef1<", ">abcdef2<", ">0123456<"})
     EXPECT_NE(html.find(commit), std::string::npos) << commit;
   // The reference job has no frame times: only its metric's trend.
