@@ -68,7 +68,7 @@ TEST_F(HtmlReport, WritesAWellFormedIndexAndOnePagePerJobWhoseLinksResolve) {
     const std::string html = readText(page);
     EXPECT_EQ(test::markupProblem(html), "") << page;
     EXPECT_NE(html.find("data-report-check"), std::string::npos) << "self-check script";
-    for (const std::string& attribute : {"href", "src"})
+    for (const std::string attribute : {"href", "src"})
       for (const std::string& link : attributeValues(html, attribute)) {
         if (link.rfind("data:", 0) == 0) continue;
         EXPECT_TRUE(fs::exists(linkedFile(page, link))) << page << " links to " << link;
