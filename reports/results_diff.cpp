@@ -117,9 +117,10 @@ void appendLines(const DiffReport& diff, Verdict verdict, std::string& out) {
     if (c.verdict == verdict) out += formatTimingLine(c) + "\n";
   for (const JobPresence& p : diff.presence)
     if (p.verdict == verdict)
-      out += fmt::format(
-          "{:<10} {}  ({})\n", verdictName(verdict), p.job,
-          verdict == Verdict::kMissing ? "in the base run, not in the new one" : "new in this run");
+      out += fmt::format("{:<10} {}  ({})\n", verdictName(verdict), p.job,
+                         verdict == Verdict::kMissing ? "in the base run, not in the new one"
+                         : verdict == Verdict::kAdded ? "new in this run"
+                                                      : "the new run ran part of its suite");
 }
 
 json toleranceJson(const Tolerance& t) {
@@ -140,6 +141,8 @@ const char* verdictName(Verdict verdict) {
       return "missing";
     case Verdict::kAdded:
       return "added";
+    case Verdict::kNotRun:
+      return "not run";
   }
   return "unknown";
 }
@@ -165,7 +168,8 @@ DiffReport diffResults(const RunResults& base, const RunResults& next) {
     auto found = next_jobs.find(base_job.id);
     const JobResult* next_job = found == next_jobs.end() ? nullptr : found->second;
     if (!next_job) {
-      diff.presence.push_back({base_job.id, Verdict::kMissing});
+      diff.presence.push_back(
+          {base_job.id, next.run.complete ? Verdict::kMissing : Verdict::kNotRun});
       continue;
     }
     diffValues(base_job.id, base_job.metrics, next_job->metrics, "", next.tolerances, diff.metrics);
@@ -190,9 +194,13 @@ std::string formatDiff(const DiffReport& diff) {
     appendLines(diff, verdict, out);
   const std::size_t unchanged = countVerdict(diff.metrics, Verdict::kUnchanged) +
                                 countVerdict(diff.timings, Verdict::kUnchanged);
-  out += fmt::format("{}, {}, {} unchanged, {} added\n", plural(diff.regressions(), "regression"),
+  out += fmt::format("{}, {}, {} unchanged, {} added", plural(diff.regressions(), "regression"),
                      plural(diff.improvements(), "improvement"), unchanged,
                      countVerdict(diff.presence, Verdict::kAdded));
+  // Jobs a partial run left out are counted, not listed: a bisect step may leave out hundreds.
+  if (const std::size_t not_run = countVerdict(diff.presence, Verdict::kNotRun))
+    out += fmt::format(", {} not run (the new run ran part of its suite)", not_run);
+  out += "\n";
   return out;
 }
 

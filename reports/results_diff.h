@@ -19,6 +19,9 @@ enum class Verdict {
   kRegressed,  // beyond tolerance, for the worse (or became non-finite)
   kMissing,    // in the base run, not in the new one: counted as a regression
   kAdded,      // in the new run only: reported, not judged
+  // In the base run, not in a new run that ran only part of its suite (`gibench run --only`,
+  // RunInfo::complete false, as a bisect step does): reported, not judged.
+  kNotRun,
 };
 const char* verdictName(Verdict verdict);  // "unchanged", "improved", …
 
@@ -43,7 +46,7 @@ struct TimingChange {
 
 struct JobPresence {
   std::string job;
-  Verdict verdict;  // kMissing or kAdded
+  Verdict verdict;  // kMissing, kAdded or kNotRun
 };
 
 struct DiffReport {

@@ -182,6 +182,20 @@ TEST(ResultsDiff, MissingJobIsARegressionAndANewJobIsNot) {
   EXPECT_EQ(diff.regressions(), 1u);
 }
 
+TEST(ResultsDiff, JobsLeftOutOfAPartialRunAreNotRegressions) {
+  RunResults base = test::syntheticRun(
+      "base", {test::syntheticJob("a", {{"relmse", 1}}), test::syntheticJob("b", {{"relmse", 1}})});
+  RunResults next = test::syntheticRun("next", {test::syntheticJob("a", {{"relmse", 1}})});
+  next.run.complete = false;  // `gibench run --only a`, as a bisect step runs it
+  const DiffReport diff = diffResults(base, next);
+  ASSERT_EQ(diff.presence.size(), 1u);
+  EXPECT_EQ(diff.presence[0].verdict, Verdict::kNotRun);
+  EXPECT_EQ(diff.regressions(), 0u);
+  EXPECT_THAT(formatDiff(diff), HasSubstr("1 not run (the new run ran part of its suite)"));
+  next.jobs[0].metrics[0].second = 2;  // what it did run is still judged
+  EXPECT_EQ(diffResults(base, next).regressions(), 1u);
+}
+
 TEST(ResultsDiff, FormatListsChangesAndASummary) {
   RunResults base =
       test::syntheticRun("run-1", {test::syntheticJob("a", {{"relmse", 0.02}, {"ssim", 0.9}}),
