@@ -59,14 +59,19 @@ void BM_DirectFrame(benchmark::State& state, std::vector<std::string> set) {
   state.SetLabel(context.identity().renderer + ", " + record.reported_clock + " clock");
 }
 
-BENCHMARK_CAPTURE(BM_DirectFrame, hard_1, std::vector<std::string>{"shadow=hard", "light_samples=1"})
-    ->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DirectFrame, hard_1,
+                  std::vector<std::string>{"shadow=hard", "light_samples=1"})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_DirectFrame, hard_16, std::vector<std::string>{"shadow=hard"})
-    ->UseManualTime()->Unit(benchmark::kMillisecond);
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_DirectFrame, pcf_16, std::vector<std::string>{"shadow=pcf"})
-    ->UseManualTime()->Unit(benchmark::kMillisecond);
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_DirectFrame, vsm_16, std::vector<std::string>{"shadow=vsm"})
-    ->UseManualTime()->Unit(benchmark::kMillisecond);
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace gib::rt

@@ -2,6 +2,7 @@
 // variance) at 128² and 512², and the key of a spec (hashing the canonical scene).
 #include "reference/reference_store.h"
 #include "scene/builtin_scenes.h"
+#include "support/temporary_directory.h"
 
 #include <benchmark/benchmark.h>
 
@@ -13,26 +14,10 @@ namespace {
 
 using namespace gib;
 
-// A store in a fresh temporary directory, removed at the end.
-class TemporaryStore {
- public:
-  TemporaryStore() {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "gib_store_bench.XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create " + pattern);
-    root_ = pattern;
-  }
-  ~TemporaryStore() { std::filesystem::remove_all(root_); }
-  const std::filesystem::path& root() const { return root_; }
-
- private:
-  std::filesystem::path root_;
-};
-
 // obtain() of a stored entry: what every job of a run pays once its reference exists.
 void BM_ObtainHit(benchmark::State& state) {
-  TemporaryStore temporary;
-  ref::ReferenceStore store(temporary.root());
+  const bench::TemporaryDirectory temporary("gib_store_bench");
+  ref::ReferenceStore store(temporary.path());
   const scene::Scene cornell = scene::loadScene("cornell");
   ref::ReferenceSpec spec;
   spec.scene = "cornell";

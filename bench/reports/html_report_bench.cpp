@@ -3,6 +3,7 @@
 #include "reports/html_report.h"
 #include "reports/svg_charts.h"
 #include "support/synthetic_report_run.h"
+#include "support/temporary_directory.h"
 
 #include <benchmark/benchmark.h>
 
@@ -30,18 +31,16 @@ reports::RunResults nightlyRun(const std::string& id, double drift) {
 
 // A run directory with its pictures, made once; the timed loop writes the report into it.
 struct ReportFixture {
-  fs::path dir;
+  const bench::TemporaryDirectory temporary{"gib-report-bench"};
+  const fs::path& dir = temporary.path();
   reports::RunResults results = nightlyRun("20261122-100405-nightly-1a2b3c4d", 0);
   reports::ReportContext context;
   ReportFixture() {
-    std::string pattern = (fs::temp_directory_path() / "gib-report-bench.XXXXXX").string();
-    dir = mkdtemp(pattern.data());
     test::writeSyntheticOutputs(dir, results);
     context.previous = nightlyRun("20261121-100405-nightly-00000000", 0.2);
     for (int r = 0; r < kTrendRuns; ++r)
       context.history.push_back(nightlyRun("run-" + std::to_string(r), 0.01 * r));
   }
-  ~ReportFixture() { fs::remove_all(dir); }
 };
 
 void BM_WriteHtmlReport50Jobs(benchmark::State& state) {

@@ -13,6 +13,7 @@
 #include "reports/history_db.h"
 #include "reports/results_diff.h"
 #include "reports/results_json.h"
+#include "support/temporary_directory.h"
 
 namespace gib::reports {
 namespace {
@@ -94,20 +95,16 @@ BENCHMARK(BM_ParseAndReadResults)->Arg(1000)->Unit(benchmark::kMillisecond);
 // a database in a temporary directory.
 void BM_HistoryAppend(benchmark::State& state) {
   const int jobs = int(state.range(0));
-  std::string pattern = (fs::temp_directory_path() / "gib_history_bench.XXXXXX").string();
-  if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create " + pattern);
-  const fs::path dir = pattern;
-  {
-    HistoryDatabase db = HistoryDatabase::open(dir / "history.sqlite");
-    RunResults run = makeRun("run", jobs, 1);
-    std::int64_t count = 0;
-    for (auto _ : state) {
-      run.run.id = "run-" + std::to_string(count++);
-      benchmark::DoNotOptimize(db.append(run));
-    }
-    state.SetItemsProcessed(state.iterations() * jobs);
+  const bench::TemporaryDirectory temporary("gib_history_bench");
+  // Declared after the directory, so closed before the directory is removed.
+  HistoryDatabase db = HistoryDatabase::open(temporary.path() / "history.sqlite");
+  RunResults run = makeRun("run", jobs, 1);
+  std::int64_t count = 0;
+  for (auto _ : state) {
+    run.run.id = "run-" + std::to_string(count++);
+    benchmark::DoNotOptimize(db.append(run));
   }
-  fs::remove_all(dir);
+  state.SetItemsProcessed(state.iterations() * jobs);
 }
 // Real time: the commit waits for the disk, which CPU time would not count.
 BENCHMARK(BM_HistoryAppend)->Arg(100)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -6,10 +6,10 @@
 #include "suites/job_execution.h"
 #include "suites/suite_file.h"
 #include "suites/suite_runner.h"
+#include "support/temporary_directory.h"
 
 #include <benchmark/benchmark.h>
 
-#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -40,8 +40,8 @@ BENCHMARK(BM_PrepareNightlyJobs)->Unit(benchmark::kMillisecond);
 // Three jobs (a reference with a convergence series and two `direct` jobs) at 32x32, references
 // from a warm store, into a fresh run directory each time.
 void BM_SmallRunWarmStore(benchmark::State& state) {
-  const fs::path root = fs::temp_directory_path() / ("gib-bench-run-" + std::to_string(getpid()));
-  fs::create_directories(root);
+  const bench::TemporaryDirectory temporary("gib-bench-run");
+  const fs::path& root = temporary.path();
   std::ofstream(root / "small.toml") << R"(name = "small"
 [defaults]
 width = 32
@@ -73,7 +73,6 @@ set = { shadow = ["hard", "pcf"], light_samples = 4 }
     benchmark::DoNotOptimize(runSuite(suite, options));
   }
   std::fclose(options.log);
-  fs::remove_all(root);
 }
 BENCHMARK(BM_SmallRunWarmStore)->Unit(benchmark::kMillisecond)->Iterations(3);
 
