@@ -292,7 +292,7 @@ std::string jobHash(const PreparedJob& p) {
   hasher.addString("gibench-job/1");
   hasher.addString(kVersion);
   hasher.addString(job.id);
-  hasher.addString(scene::hashScene(p.scene));
+  hasher.addString(p.scene_hash);
   hasher.addU64(std::uint64_t(p.width));
   hasher.addU64(std::uint64_t(p.height));
   hasher.addString(job.technique);
@@ -333,6 +333,7 @@ PreparedJob prepareJob(const Job& job) {
   } catch (const InputError& e) {
     throw InputError(fmt::format("job {}: {}", job.id, e.what()));
   }
+  p.scene_hash = scene::hashScene(p.scene);
   p.hash = jobHash(p);
   return p;
 }
@@ -346,7 +347,7 @@ reports::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
   result.slug = job.slug;
   result.case_name = job.case_name;
   result.scene = job.scene.name;
-  result.scene_hash = scene::hashScene(p.scene);
+  result.scene_hash = p.scene_hash;
   result.technique = job.technique;
   if (p.parameters) result.parameters = p.parameters->canonical();
   result.scene_parameters = job.scene_parameters;

@@ -26,6 +26,7 @@ struct PreparedJob {
   const rt::TechniqueInfo* technique = nullptr;  // null for a reference job
   std::optional<ParameterValues> parameters;     // of the technique
   scene::PathClass path_class;                   // of the technique; every path for the reference
+  std::string scene_hash;                        // scene::hashScene, computed once
   std::string hash;  // what makes a recorded result of this job still valid (resume)
 };
 
