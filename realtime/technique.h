@@ -27,6 +27,18 @@ struct Frame {
   gl::PassProfiler& profiler;
 };
 
+// An image of a technique's internal state, linear float RGB like the camera image.
+struct AuxiliaryImage {
+  std::string name;         // a file-name-safe identifier: "atlas", "indirect-1"
+  std::string description;  // one line, shown under the image in the report
+  image::Image image;
+};
+
+struct TechniqueStatistic {
+  std::string name;  // identifier: "vertices", "atlas_texels"
+  double value = 0;
+};
+
 // Constructing a technique (TechniqueInfo::create) must do no GL work: `gibench list` builds one
 // without a context to ask its path class. GL objects are made in prepare().
 class Technique {
@@ -47,6 +59,16 @@ class Technique {
 
   // The light paths this technique models with its current parameters (DESIGN.md, path classes).
   virtual scene::PathClass pathClass() const = 0;
+
+  // Images of the technique's internal state that a paper shows beside the camera image (a
+  // radiance atlas, one bounce's contribution). Called once after the last measured frame with
+  // the context current; the harness writes them beside the job's image and shows them in the
+  // report.
+  virtual std::vector<AuxiliaryImage> auxiliaryImages() { return {}; }
+
+  // Counts that figures are drawn against (vertices drawn, texels, grid points), recorded in the
+  // job's results. Called after prepare().
+  virtual std::vector<TechniqueStatistic> statistics() const { return {}; }
 };
 
 struct TechniqueInfo {
