@@ -50,7 +50,7 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   image::Metadata metadata = rt::techniqueOutputMetadata(scene, info, parameters, settings, result,
                                                          rows.front().reported.median);
   metadata["gibench/peak_rss_mb"] = fmt::format("{:.1f}", ref::peakResidentMegabytes());
-  const std::filesystem::path png = rt::writeTechniqueOutputs(out, result, metadata);
+  const rt::TechniqueOutputFiles files = rt::writeTechniqueOutputs(out, result, metadata);
   if (!o.timings_json.empty()) image::writeTextFile(o.timings_json, timings.dump(2) + "\n");
 
   fmt::print("scene      {} (hash {})\n", scene.name, metadata.at("gibench/scene_hash"));
@@ -63,8 +63,17 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   fmt::print("prepare    upload {:.1f} ms, prepare {:.1f} ms\n", result.upload_ms,
              result.prepare_ms);
   fmt::print("{}", metrics::formatPassTable(result.profile, rows));
+  if (!result.iteration_profile.passes.empty() && result.iteration_profile.measured_frames > 0) {
+    fmt::print("iterations {} in {:.1f} ms\n", result.iterations, result.iterate_ms);
+    fmt::print("{}", metrics::formatPassTable(result.iteration_profile,
+                                              metrics::summarizeProfile(result.iteration_profile)));
+  }
+  for (const rt::TechniqueStatistic& statistic : result.statistics)
+    fmt::print("{:<10} {:g}\n", statistic.name, statistic.value);
   fmt::print("exr        {}\n", out.string());
-  fmt::print("png        {}\n", png.string());
+  fmt::print("png        {}\n", files.png.string());
+  for (const rt::AuxiliaryImageFiles& aux : files.auxiliary)
+    fmt::print("{:<10} {} ({})\n", aux.name, aux.png.string(), aux.description);
   if (!o.timings_json.empty()) fmt::print("timings    {}\n", o.timings_json);
   return 0;
 }

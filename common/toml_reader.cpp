@@ -114,6 +114,14 @@ std::string TomlTableReader::string(const toml::node& node, std::string_view key
   return s->get();
 }
 
+bool TomlTableReader::boolean(const toml::node& node, std::string_view key) const {
+  const auto* b = node.as_boolean();
+  if (!b)
+    errors_.fail(node, fmt::format("{} must be true or false", path(key)),
+                 "write true or false without quotes");
+  return b->get();
+}
+
 const toml::table& requireTomlTable(const TomlErrorReporter& errors, const toml::node& node,
                                     const std::string& name, std::string_view fix) {
   if (!node.is_table()) errors.fail(node, fmt::format("{} must be a table", name), fix);

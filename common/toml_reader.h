@@ -83,6 +83,8 @@ class TomlTableReader {
                     std::string_view example) const;
   // A non-empty string.
   std::string string(const toml::node& node, std::string_view key) const;
+  // true or false.
+  bool boolean(const toml::node& node, std::string_view key) const;
 
  private:
   const TomlErrorReporter& errors_;

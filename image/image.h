@@ -47,4 +47,9 @@ class Image {
 // every error metric would silently turn into NaN.
 std::size_t countNonFinite(const Image& image);
 
+// The luminance of linear Rec.709 RGB (ITU-R BT.709 weights).
+inline float rec709Luminance(const float* rgb) {
+  return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
+}
+
 }  // namespace gib::image

@@ -29,12 +29,11 @@ image::Image absoluteLuminanceDifference(const image::Image& reference, const im
   if (reference.width() != test.width() || reference.height() != test.height() ||
       reference.channels() < 3 || test.channels() < 3)
     throw std::invalid_argument("absoluteLuminanceDifference needs two RGB images of one size");
-  auto luminance = [](const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; };
   image::Image difference(reference.width(), reference.height(), 1);
   for (int y = 0; y < reference.height(); ++y)
     for (int x = 0; x < reference.width(); ++x)
-      *difference.pixel(x, y) =
-          std::abs(luminance(test.pixel(x, y)) - luminance(reference.pixel(x, y)));
+      *difference.pixel(x, y) = std::abs(image::rec709Luminance(test.pixel(x, y)) -
+                                         image::rec709Luminance(reference.pixel(x, y)));
   return difference;
 }
 

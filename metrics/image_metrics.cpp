@@ -139,4 +139,21 @@ std::size_t countNonFiniteInEither(const image::Image& reference, const image::I
   return count;
 }
 
+MetricValue computeEnergyRatio(const image::Image& reference, const image::Image& test) {
+  requireComparable(reference, test);
+  // Serial and in pixel order, so the sums do not depend on the thread count.
+  double reference_sum = 0, test_sum = 0;
+  for (int y = 0; y < reference.height(); ++y)
+    for (int x = 0; x < reference.width(); ++x) {
+      const float* r = reference.pixel(x, y);
+      const float* t = test.pixel(x, y);
+      if (!pixelIsFinite(r) || !pixelIsFinite(t)) continue;
+      reference_sum += image::rec709Luminance(r);
+      test_sum += image::rec709Luminance(t);
+    }
+  MetricValue result;
+  result.value = reference_sum > 0 ? test_sum / reference_sum : kNaN;
+  return result;
+}
+
 }  // namespace gib::metrics

@@ -35,6 +35,10 @@ MetricValue computeSmape(const image::Image& reference, const image::Image& test
                          double epsilon = kRelativeEpsilon);
 // 10·log10(1 / MSE) of the display-mapped images (tone_map.h), in dB; +inf for equal images.
 MetricValue computePsnr(const image::Image& reference, const image::Image& test);
+// Energy: the mean luminance of `test` over the mean luminance of `reference`, over the pixels
+// finite in both (1 = the same light in the image; radiosity's lost or gained energy shows here).
+// No map. NaN when the reference is black.
+MetricValue computeEnergyRatio(const image::Image& reference, const image::Image& test);
 
 // Pixels with a non-finite channel in either image.
 std::size_t countNonFiniteInEither(const image::Image& reference, const image::Image& test);

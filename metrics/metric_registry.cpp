@@ -66,6 +66,10 @@ const std::vector<MetricEntry>& entries() {
               [](auto& r, auto& t, auto& o) { return computeSmape(r, t, o.relative_epsilon); })},
       {{"psnr", "PSNR in dB after clamping to [0,1] and the sRGB curve"},
        scalar("psnr", [](auto& r, auto& t, auto&) { return computePsnr(r, t); })},
+      {{"energy",
+        "energy_ratio: mean luminance of the image over the reference's (1 = no light "
+        "lost or gained)"},
+       scalar("energy_ratio", [](auto& r, auto& t, auto&) { return computeEnergyRatio(r, t); })},
       {{"ssim", "SSIM of display luminance (11x11 Gaussian window, sigma 1.5)"},
        scalar("ssim", [](auto& r, auto& t, auto&) { return computeSsim(r, t); })},
       {{"flip", "LDR-FLIP (Andersson et al. 2020): mean, weighted median and quartiles, max"},

@@ -4,7 +4,11 @@
 #include "scene/output_metadata.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 namespace gib::rt {
 
@@ -27,13 +31,31 @@ image::Metadata techniqueOutputMetadata(const scene::Scene& scene, const Techniq
   return metadata;
 }
 
-std::filesystem::path writeTechniqueOutputs(const std::filesystem::path& exr_path,
-                                            const TechniqueRunResult& result,
-                                            const image::Metadata& metadata) {
-  image::writeExr(exr_path, {{"", result.image}}, metadata);
-  const std::filesystem::path png = std::filesystem::path(exr_path).replace_extension(".png");
-  image::writePng(png, result.image);
-  return png;
+TechniqueOutputFiles writeTechniqueOutputs(const std::filesystem::path& exr_path,
+                                           const TechniqueRunResult& result,
+                                           const image::Metadata& metadata) {
+  auto write = [&](const std::filesystem::path& exr, const image::Image& image) {
+    image::writeExr(exr, {{"", image}}, metadata);
+    const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
+    image::writePng(png, image);
+    return png;
+  };
+  TechniqueOutputFiles files;
+  files.png = write(exr_path, result.image);
+  for (const AuxiliaryImage& aux : result.auxiliary) {
+    // The name becomes part of a file name; a technique that breaks that rule is a bug.
+    const bool safe =
+        !aux.name.empty() && std::all_of(aux.name.begin(), aux.name.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
+        });
+    if (!safe)
+      throw std::logic_error(
+          fmt::format("auxiliary image name '{}' is not a safe file name part", aux.name));
+    const std::filesystem::path exr =
+        exr_path.parent_path() / (exr_path.stem().string() + "-" + aux.name + ".exr");
+    files.auxiliary.push_back({aux.name, aux.description, exr, write(exr, aux.image)});
+  }
+  return files;
 }
 
 }  // namespace gib::rt

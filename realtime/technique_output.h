@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace gib::rt {
 
@@ -22,9 +23,20 @@ image::Metadata techniqueOutputMetadata(const scene::Scene& scene, const Techniq
                                         const TechniqueRunSettings& settings,
                                         const TechniqueRunResult& result, double frame_ms_median);
 
-// Writes `exr_path` and the PNG of the same stem beside it; returns the PNG's path.
-std::filesystem::path writeTechniqueOutputs(const std::filesystem::path& exr_path,
-                                            const TechniqueRunResult& result,
-                                            const image::Metadata& metadata);
+struct AuxiliaryImageFiles {
+  std::string name, description;
+  std::filesystem::path exr, png;
+};
+
+struct TechniqueOutputFiles {
+  std::filesystem::path png;
+  std::vector<AuxiliaryImageFiles> auxiliary;
+};
+
+// Writes `exr_path` and the PNG of the same stem beside it, and each auxiliary image as
+// "<stem>-<name>.exr" and ".png" with the same metadata.
+TechniqueOutputFiles writeTechniqueOutputs(const std::filesystem::path& exr_path,
+                                           const TechniqueRunResult& result,
+                                           const image::Metadata& metadata);
 
 }  // namespace gib::rt

@@ -29,14 +29,53 @@ double timedMilliseconds(F&& work) {
 void checkSettings(const TechniqueRunSettings& s) {
   constexpr int kMaxSize = 16384;
   if (s.width < 1 || s.height < 1 || s.width > kMaxSize || s.height > kMaxSize)
-    throw InputError(fmt::format("image size {}x{} is out of range; give 1 to {} per side",
-                                 s.width, s.height, kMaxSize));
+    throw InputError(fmt::format("image size {}x{} is out of range; give 1 to {} per side", s.width,
+                                 s.height, kMaxSize));
   if (s.frames < 1)
     throw InputError(fmt::format("--frames {} measures nothing; give at least 1", s.frames));
   if (s.warmup_frames < 0)
     throw InputError(fmt::format("--warmup {} is negative; give 0 or more", s.warmup_frames));
   if (s.iterations < 0)
     throw InputError(fmt::format("--iterations {} is negative; give 0 or more", s.iterations));
+  int previous = 0;
+  for (int count : s.capture_after) {
+    if (count < previous || count > s.iterations)
+      throw InputError(fmt::format(
+          "iteration checkpoint {} is out of order or beyond the {} iterations run; give "
+          "ascending counts up to the iteration count",
+          count, s.iterations));
+    previous = count;
+  }
+}
+
+// Runs the iterations, each step() one profiled "iteration", capturing the image after the
+// requested counts. A capture renders outside any profiled frame, so it is not timed.
+void iterate(Technique& technique, const TechniqueRunSettings& settings, bool precise,
+             RenderTarget& target, TechniqueRunResult& result) {
+  gl::PassProfiler profiler(precise, 4, "iteration");
+  gl::PassProfiler untimed(precise);
+  Frame capture_frame{target, untimed};
+  std::size_t next_capture = 0;
+  auto capture = [&](int count) {
+    for (; next_capture < settings.capture_after.size() &&
+           settings.capture_after[next_capture] == count;
+         ++next_capture) {
+      target.clear(0, 0, 0);
+      technique.render(capture_frame);
+      result.captures.push_back({count, result.iterate_ms, target.read()});
+    }
+  };
+  capture(0);
+  for (int i = 1; i <= settings.iterations; ++i) {
+    result.iterate_ms += timedMilliseconds([&] {
+      profiler.beginFrame(true);
+      technique.step(profiler);
+      profiler.endFrame();
+    });
+    capture(i);
+  }
+  result.iteration_profile = profiler.finish();
+  result.iterations = technique.iterations();
 }
 
 }  // namespace
@@ -53,17 +92,13 @@ TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& 
     std::optional<GpuScene> gpu_scene;
     result.upload_ms =
         timedMilliseconds([&] { gpu_scene.emplace(scene, settings.width, settings.height); });
-    result.prepare_ms = timedMilliseconds(
-        [&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
+    result.prepare_ms =
+        timedMilliseconds([&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
+    result.statistics = technique->statistics();
     const bool precise = settings.precise.value_or(result.gl.software);
-    gl::PassProfiler profiler(precise);
-    if (technique->iterative()) {
-      result.iterate_ms = timedMilliseconds([&] {
-        for (int i = 0; i < settings.iterations; ++i) technique->step(profiler);
-      });
-      result.iterations = technique->iterations();
-    }
     RenderTarget target(settings.width, settings.height);
+    if (technique->iterative()) iterate(*technique, settings, precise, target, result);
+    gl::PassProfiler profiler(precise);
     Frame frame{target, profiler};
     for (int i = 0; i < settings.warmup_frames + settings.frames; ++i) {
       profiler.beginFrame(i >= settings.warmup_frames);
@@ -73,6 +108,7 @@ TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& 
     }
     result.profile = profiler.finish();
     result.image = target.read();
+    result.auxiliary = technique->auxiliaryImages();
     result.path_class = technique->pathClass();
   }
   if (context->debug()) {

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gib::rt {
 
@@ -25,12 +26,27 @@ struct TechniqueRunSettings {
   // queries miss vertex work), off on a GPU.
   std::optional<bool> precise;
   int iterations = 1;  // step() calls before the frames, for iterative techniques
+  // Iteration counts (ascending, each ≤ iterations) after which an iterative technique's image is
+  // also captured, unprofiled: an error-against-iterations series from one run.
+  std::vector<int> capture_after;
   gl::ContextOptions context;
+};
+
+// The image after a number of iterations, and the iteration time spent to get there.
+struct IterationCapture {
+  int iterations = 0;
+  double iterate_ms = 0;  // the step() calls up to here, not the captures' frames
+  image::Image image;
 };
 
 struct TechniqueRunResult {
   image::Image image;  // RGB, pixel (0,0) top left
   ProfileRecord profile;
+  // Each step() as one profiled unit named "iteration" (empty unless the technique iterates).
+  ProfileRecord iteration_profile;
+  std::vector<IterationCapture> captures;  // one per TechniqueRunSettings::capture_after
+  std::vector<AuxiliaryImage> auxiliary;   // Technique::auxiliaryImages after the last frame
+  std::vector<TechniqueStatistic> statistics;
   double upload_ms = 0;   // scene upload, wall clock around glFinish
   double prepare_ms = 0;  // Technique::prepare
   double iterate_ms = 0;  // all step() calls

@@ -94,4 +94,27 @@ std::string imageViewer(const fs::path& run_dir, const JobResult& job) {
   return html + notes;
 }
 
+std::string auxiliaryImages(const fs::path& run_dir, const JobResult& job) {
+  std::string figures, absent;
+  for (const AuxiliaryImageOutput& aux : job.auxiliary_images) {
+    if (!exists(run_dir, aux.png)) {
+      absent += (absent.empty() ? "" : ", ") + escapeHtml(aux.png);
+      continue;
+    }
+    figures += fmt::format(
+        "<figure class=\"auxiliary\"><img src=\"{}\" alt=\"{}\"><figcaption>{}: {}"
+        "</figcaption></figure>\n",
+        escapeHtml(outputHref(aux.png, 1)), escapeHtml(aux.name), escapeHtml(aux.name),
+        escapeHtml(aux.description));
+  }
+  if (figures.empty() && absent.empty()) return {};
+  std::string html = "<div class=\"charts\">\n" + figures + "</div>\n";
+  if (!absent.empty())
+    html += fmt::format(
+        "<p class=\"note\">Listed in the results but absent when the report was written: {}."
+        "</p>\n",
+        absent);
+  return html;
+}
+
 }  // namespace gib::reports

@@ -15,4 +15,8 @@ namespace gib::reports {
 // HTML for a page one directory below the run directory (report/<slug>.html).
 std::string imageViewer(const std::filesystem::path& run_dir, const JobResult& job);
 
+// The technique's auxiliary images (a radiance atlas, one bounce's contribution) side by side
+// with their descriptions; empty when the job has none. Same page depth as imageViewer.
+std::string auxiliaryImages(const std::filesystem::path& run_dir, const JobResult& job);
+
 }  // namespace gib::reports

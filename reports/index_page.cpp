@@ -1,5 +1,7 @@
 #include "reports/index_page.h"
 
+#include "reports/figure_charts.h"
+
 #include "reports/html_text.h"
 #include "reports/number_format.h"
 #include "reports/report_labels.h"
@@ -173,6 +175,7 @@ std::string indexPage(const RunResults& results, const RunComparison& comparison
   body += htmlSection("comparison", "Against the previous run", comparisonIntro(comparison));
   body += regressionsSection(results, comparison);
   body += matrixSection(results, comparison);
+  body += figuresSection(results);
   return htmlPage(fmt::format("GI Bench: {} ({})", results.run.suite, results.run.id), body);
 }
 

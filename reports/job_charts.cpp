@@ -38,13 +38,14 @@ std::string timingsIntro(const TimingsView& view, const std::optional<JobCompari
   return intro + ".</p>\n";
 }
 
-std::string passTable(const TimingsView& view) {
+// `unit`: what one sample times, "frame" or "iteration".
+std::string passTable(const TimingsView& view, std::string_view unit) {
   HtmlTable table({{"pass"},
                    {"median ms", true},
                    {"first quartile", true},
                    {"third quartile", true},
-                   {"share of frame", true},
-                   {"calls per frame", true}});
+                   {fmt::format("share of {}", unit), true},
+                   {fmt::format("calls per {}", unit), true}});
   for (const PassTimes& pass : view.passes)
     table.addRow({fmt::format("<span style=\"padding-left:{}em\">{}</span>",
                               1.2 * std::max(0, pass.depth), escapeHtml(pass.name)),
@@ -109,8 +110,21 @@ std::string timingsSection(const JobResult& job, const std::optional<JobComparis
   const std::string phases = phasesTable(job);
   if (!view) return phases.empty() ? std::string() : htmlSection("timings", "Timings", phases);
   return htmlSection("timings", "Timings",
-                     timingsIntro(*view, compared) + "<div class=\"charts\">\n" + passTable(*view) +
-                         passTimingChart(passBars(*view)) + "\n</div>\n" + phases);
+                     timingsIntro(*view, compared) + "<div class=\"charts\">\n" +
+                         passTable(*view, "frame") + passTimingChart(passBars(*view)) +
+                         "\n</div>\n" + phases);
+}
+
+std::string iterationTimingsSection(const JobResult& job) {
+  const std::optional<TimingsView> view = readTimings(job.iteration_timings);
+  if (!view) return {};
+  const std::string intro = fmt::format(
+      "<p>{}; {} iterations, each timed as one unit. Median iteration {} ms.</p>\n",
+      escapeHtml(view->clock_description.empty() ? view->clock : view->clock_description),
+      view->measured_frames, escapeHtml(formatNumber(view->passes.front().median_ms)));
+  return htmlSection("iteration-timings", "Time per iteration",
+                     intro + "<div class=\"charts\">\n" + passTable(*view, "iteration") +
+                         passTimingChart(passBars(*view), "iteration") + "\n</div>\n");
 }
 
 std::string convergenceSection(const JobResult& job, const std::string& primary_metric) {

@@ -12,6 +12,8 @@
 namespace gib::reports {
 
 std::string timingsSection(const JobResult& job, const std::optional<JobComparison>& compared);
+// The per-pass time of each iteration of an iterative technique; empty when it has none.
+std::string iterationTimingsSection(const JobResult& job);
 
 std::string convergenceSection(const JobResult& job, const std::string& primary_metric);
 

@@ -1,14 +1,19 @@
 #include "reports/job_page.h"
 
+#include "common/join.h"
+
 #include "reports/html_text.h"
 #include "reports/image_viewer.h"
 #include "reports/job_charts.h"
 #include "reports/number_format.h"
+#include "reports/paper_table.h"
 #include "reports/pass_timings_view.h"
 #include "reports/report_labels.h"
 #include "reports/report_page.h"
 
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include <algorithm>
 
@@ -23,6 +28,13 @@ std::string referenceText(const ReferenceUse& use) {
                                                  formatNumber(use.render_seconds, 3)));
 }
 
+// Statistics are mostly counts: whole numbers in full (16000, not 1.6e+04).
+std::string formatCount(double value) {
+  if (std::isfinite(value) && std::floor(value) == value && std::abs(value) < 1e15)
+    return fmt::format("{:.0f}", value);
+  return formatNumber(value);
+}
+
 std::string jobFacts(const JobResult& job) {
   return factsTable({
       {"case", job.case_name},
@@ -34,6 +46,9 @@ std::string jobFacts(const JobResult& job) {
       {"parameters", formatAssignments(job.parameters)},
       {"image", job.width > 0 ? fmt::format("{} × {} pixels", job.width, job.height) : ""},
       {"path class", job.path_class},
+      {"statistics",
+       joinNames(job.statistics, ", ",
+                 [](const auto& s) { return s.first + " " + formatCount(s.second); })},
       {"reference", referenceText(job.reference)},
       {"full reference", job.full_reference ? referenceText(*job.full_reference) : ""},
       {"job time", fmt::format("{} s", formatNumber(job.seconds, 3))},
@@ -81,38 +96,10 @@ std::string metricsSection(const JobResult& job, const std::optional<JobComparis
   return htmlSection("metrics", "Metrics", note + table.html());
 }
 
-// Our value of a paper quantity: a metric against the class reference, else against the full
-// reference, else a timing pass's median.
-std::optional<double> ourValue(const JobResult& job, const std::string& quantity) {
-  if (const std::optional<double> metric = job.metric(quantity)) return metric;
-  for (const auto& [name, value] : job.metrics_full)
-    if (name == quantity) return value;
-  if (const std::optional<TimingsView> timings = readTimings(job.timings))
-    return passMedianMs(*timings, quantity);
-  return std::nullopt;
-}
-
 std::string paperSection(const RunResults& results, const JobResult& job) {
-  HtmlTable table({{"quantity"},
-                   {"paper", true},
-                   {"ours", true},
-                   {"ours / paper", true},
-                   {"source"},
-                   {"note"}});
-  for (const PaperValue& paper : results.paper) {
-    if (paper.job != job.id) continue;
-    const std::string unit = paper.unit.empty() ? "" : " " + paper.unit;
-    const std::optional<double> ours = ourValue(job, paper.quantity);
-    table.addRow({escapeHtml(paper.quantity), escapeHtml(formatNumber(paper.value) + unit),
-                  ours ? escapeHtml(formatNumber(*ours) + unit) : "not measured",
-                  ours && paper.value != 0 ? formatNumber(*ours / paper.value, 3) : "",
-                  escapeHtml(paper.source), escapeHtml(paper.note)});
-  }
+  const std::string table = paperTable(results, &job.id);
   if (table.empty()) return {};
-  return htmlSection("paper", "The paper's numbers beside ours",
-                     "<p class=\"muted\">Timings come from different hardware: compare ratios "
-                     "between techniques rather than absolute times.</p>\n" +
-                         table.html());
+  return htmlSection("paper", "The paper's numbers beside ours", table);
 }
 
 }  // namespace
@@ -129,7 +116,10 @@ std::string jobPage(const std::filesystem::path& run_dir, const RunResults& resu
   body += jobFacts(job);
   body += metricsSection(job, compared);
   body += htmlSection("images", "Images", imageViewer(run_dir, job));
+  if (const std::string aux = auxiliaryImages(run_dir, job); !aux.empty())
+    body += htmlSection("auxiliary", "The technique's internal state", aux);
   body += timingsSection(job, compared);
+  body += iterationTimingsSection(job);
   body += convergenceSection(job, results.primary_metric);
   body += paperSection(results, job);
   body += trendsSection(results, job, context);

@@ -1,5 +1,7 @@
 #include "reports/results.h"
 
+#include <cmath>
+
 #include <algorithm>
 
 namespace gib::reports {
@@ -45,6 +47,11 @@ const JobResult* RunResults::findJob(const std::string& id) const {
 
 bool higherIsBetter(const std::string& name) {
   return name == "psnr" || name.rfind("ssim", 0) == 0;
+}
+
+double metricBadness(const std::string& name, double value) {
+  if (name == "energy_ratio") return std::abs(value - 1.0);
+  return higherIsBetter(name) ? -value : value;
 }
 
 }  // namespace gib::reports

@@ -56,12 +56,25 @@ struct Tolerances {
 // A number from the source document, shown beside ours in the report of a figure suite.
 struct PaperValue {
   std::string job;       // the job id it belongs to
-  std::string quantity;  // a metric value name ("relmse") or a timing pass name ("frame")
+  std::string quantity;  // see reports/quantity.h: "relmse", "full:relmse", "frame", "iteration"
   double value = 0;
   std::string unit;    // "ms", "" for a ratio
   std::string source;  // "Nijasure et al. 2005, Table 1"
   std::string note;    // "Radeon 9800 Pro, 64x64 grid"
   bool operator==(const PaperValue&) const = default;
+};
+
+// A chart of a figure suite (`[[chart]]`): one quantity against another over the suite's jobs,
+// e.g. time per iteration against vertex count, or error against frame time. Quantities are
+// named as in PaperValue (see reports/quantity.h).
+struct ChartSpec {
+  std::string title;
+  std::string jobs = "*";  // glob over job ids
+  std::string x, y;
+  std::string series;  // optional quantity whose values split the points into lines
+  bool log_x = false, log_y = false;
+  bool front = false;  // mark the Pareto front: the points no other point beats in both x and y
+  bool operator==(const ChartSpec&) const = default;
 };
 
 struct RunInfo {
@@ -126,6 +139,14 @@ struct JobOutputs {
   bool operator==(const JobOutputs&) const = default;
 };
 
+// An image of a technique's internal state (a radiance atlas, one bounce's contribution).
+struct AuxiliaryImageOutput {
+  std::string name;
+  std::string description;
+  std::string exr, png;  // relative to the run directory
+  bool operator==(const AuxiliaryImageOutput&) const = default;
+};
+
 struct JobResult {
   std::string id;    // suite job id: "cornell-direct/shadow=pcf"
   std::string slug;  // the id as a file name
@@ -148,9 +169,14 @@ struct JobResult {
   // Technique jobs: metrics::passTimingsJson (clock, frames, passes with per-frame samples).
   // Null for reference jobs.
   nlohmann::ordered_json timings;
+  // Iterative techniques: each iteration (step) timed as one unit, in the same form as `timings`
+  // with the root pass named "iteration". Null otherwise.
+  nlohmann::ordered_json iteration_timings;
   double upload_ms = 0, prepare_ms = 0, iterate_ms = 0;
   int iterations = 0;
+  NamedValues statistics;  // the technique's counts (vertices, texels, grid points)
   JobOutputs outputs;
+  std::vector<AuxiliaryImageOutput> auxiliary_images;
   double seconds = 0;    // wall time of the whole job
   std::string job_hash;  // hash of everything that defines the job (resume skips a match)
   bool operator==(const JobResult&) const = default;
@@ -171,6 +197,7 @@ struct RunResults {
   // ("relmse" when measured).
   std::string primary_metric;
   std::vector<PaperValue> paper;
+  std::vector<ChartSpec> charts;
   std::vector<JobResult> jobs;  // suite order
   bool operator==(const RunResults&) const = default;
 
@@ -179,5 +206,9 @@ struct RunResults {
 
 // Whether a larger value of the metric value is better (PSNR, SSIM) rather than worse (errors).
 bool higherIsBetter(const std::string& metric_value_name);
+// How far a metric value is from ideal, in the value's own units: the value for errors, its
+// negation for PSNR and SSIM, and |value − 1| for a ratio whose ideal is 1 (energy_ratio).
+// A change is an improvement when it lowers this.
+double metricBadness(const std::string& metric_value_name, double value);
 
 }  // namespace gib::reports

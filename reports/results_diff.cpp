@@ -27,7 +27,7 @@ double relativeChange(double base, double next) {
 
 // NaN is worse than any number; infinities are compared by direction (a PSNR of +inf is a
 // perfect image, a relMSE of +inf a broken one), and a change to or from one is never noise.
-Verdict judgeMetric(double base, double next, const Tolerance& tolerance, bool higher_is_better) {
+Verdict judgeMetric(double base, double next, const Tolerance& tolerance, const std::string& name) {
   if (std::isnan(base) || std::isnan(next)) {
     if (std::isnan(base) && std::isnan(next)) return Verdict::kUnchanged;
     return std::isnan(next) ? Verdict::kRegressed : Verdict::kImproved;
@@ -37,7 +37,7 @@ Verdict judgeMetric(double base, double next, const Tolerance& tolerance, bool h
   const double allowed = std::max(tolerance.absolute, tolerance.relative * std::abs(base));
   const bool finite = std::isfinite(base) && std::isfinite(next);
   if (finite && std::abs(change) <= allowed) return Verdict::kUnchanged;
-  const bool better = higher_is_better ? change > 0 : change < 0;
+  const bool better = metricBadness(name, next) < metricBadness(name, base);
   return better ? Verdict::kImproved : Verdict::kRegressed;
 }
 
@@ -56,7 +56,7 @@ void diffValues(const std::string& job, const NamedValues& base, const NamedValu
     change.absolute_change = change.next - change.base;
     change.relative_change = relativeChange(change.base, change.next);
     change.tolerance = tolerances.forMetric(name);
-    change.verdict = judgeMetric(change.base, change.next, change.tolerance, higherIsBetter(name));
+    change.verdict = judgeMetric(change.base, change.next, change.tolerance, name);
     out.push_back(change);
   }
 }

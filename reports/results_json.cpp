@@ -71,6 +71,24 @@ const std::array<JsonMember<PaperValue>, 6> kPaperValueMembers = {{
     jsonMember<&PaperValue::note>("note"),
 }};
 
+const std::array<JsonMember<ChartSpec>, 8> kChartMembers = {{
+    jsonMember<&ChartSpec::title>("title"),
+    jsonMember<&ChartSpec::jobs>("jobs"),
+    jsonMember<&ChartSpec::x>("x"),
+    jsonMember<&ChartSpec::y>("y"),
+    jsonMember<&ChartSpec::series>("series"),
+    jsonMember<&ChartSpec::log_x>("log_x"),
+    jsonMember<&ChartSpec::log_y>("log_y"),
+    jsonMember<&ChartSpec::front>("front"),
+}};
+
+const std::array<JsonMember<AuxiliaryImageOutput>, 4> kAuxiliaryImageMembers = {{
+    jsonMember<&AuxiliaryImageOutput::name>("name"),
+    jsonMember<&AuxiliaryImageOutput::description>("description"),
+    jsonMember<&AuxiliaryImageOutput::exr>("exr"),
+    jsonMember<&AuxiliaryImageOutput::png>("png"),
+}};
+
 const std::array<JsonMember<ReferenceUse>, 6> kReferenceMembers = {{
     jsonMember<&ReferenceUse::key>("key"),
     jsonMember<&ReferenceUse::spp>("spp"),
@@ -235,6 +253,16 @@ JobResult readJob(const JsonField& f) {
     j.timings = timings->json();
   }
   j.outputs = membersFromJson(f.at("outputs"), kOutputsMembers);
+  // Added after version 1, so optional (docs/results-schema.md, compatibility).
+  if (auto timings = f.find("iteration_timings")) {
+    checkTimings(*timings);
+    j.iteration_timings = timings->json();
+  }
+  if (auto statistics = f.find("statistics")) j.statistics = readNamedValues(*statistics);
+  if (auto images = f.find("auxiliary_images"))
+    images->forEachElement([&](const JsonField& image) {
+      j.auxiliary_images.push_back(membersFromJson(image, kAuxiliaryImageMembers));
+    });
   return j;
 }
 
@@ -290,12 +318,20 @@ json jobToJson(const JobResult& j) {
   out["convergence"] = j.convergence ? convergenceToJson(*j.convergence) : json();
   out["timings"] = j.timings;
   out["outputs"] = membersToJson(j.outputs, kOutputsMembers);
+  out["iteration_timings"] = j.iteration_timings;
+  out["statistics"] = namedValuesToJson(j.statistics);
+  json images = json::array();
+  for (const AuxiliaryImageOutput& image : j.auxiliary_images)
+    images.push_back(membersToJson(image, kAuxiliaryImageMembers));
+  out["auxiliary_images"] = std::move(images);
   return out;
 }
 
 json resultsToJson(const RunResults& results) {
   json paper = json::array();
   for (const PaperValue& p : results.paper) paper.push_back(membersToJson(p, kPaperValueMembers));
+  json charts = json::array();
+  for (const ChartSpec& c : results.charts) charts.push_back(membersToJson(c, kChartMembers));
   json jobs = json::array();
   for (const JobResult& j : results.jobs) jobs.push_back(jobToJson(j));
   return {{"schema", kResultsSchemaName},
@@ -304,6 +340,7 @@ json resultsToJson(const RunResults& results) {
           {"tolerances", tolerancesToJson(results.tolerances)},
           {"primary_metric", results.primary_metric},
           {"paper", std::move(paper)},
+          {"charts", std::move(charts)},
           {"jobs", std::move(jobs)}};
 }
 
@@ -317,6 +354,9 @@ RunResults resultsFromJson(const json& document, const std::string& source) {
   results.primary_metric = top.at("primary_metric").asString();
   top.at("paper").forEachElement(
       [&](const JsonField& p) { results.paper.push_back(membersFromJson(p, kPaperValueMembers)); });
+  if (auto charts = top.find("charts"))
+    charts->forEachElement(
+        [&](const JsonField& c) { results.charts.push_back(membersFromJson(c, kChartMembers)); });
   top.at("jobs").forEachElement([&](const JsonField& j) { results.jobs.push_back(readJob(j)); });
   return results;
 }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace gib::reports {
 
@@ -90,7 +91,7 @@ std::string hexColor(const float rgb[3]) {
 
 }  // namespace
 
-std::string passTimingChart(const std::vector<PassBar>& passes) {
+std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view unit) {
   constexpr double kRowHeight = 20, kIndent = 12, kTop = 8, kBarsWidth = 360, kValueWidth = 84;
   constexpr std::array<const char*, 3> kDepthColors = {"#2f5f98", "#5b8bc6", "#93b5de"};
   std::vector<const PassBar*> drawn;
@@ -108,7 +109,8 @@ std::string passTimingChart(const std::vector<PassBar>& passes) {
   const double height = area.bottom + 40 + (skipped ? 16 : 0);
   SvgWriter svg(area.right + kValueWidth, height, "Median time per pass in ms");
   const Axis axis = linearAxis(0, top_value > 0 ? top_value : 1);
-  drawXAxis(svg, area, axis, "ms per frame: median, whiskers from first to third quartile");
+  drawXAxis(svg, area, axis,
+            fmt::format("ms per {}: median, whiskers from first to third quartile", unit));
   if (drawn.empty()) svg.text(area.left + 8, kTop + 14, "no finite pass times");
   for (std::size_t i = 0; i < drawn.size(); ++i) {
     const PassBar& pass = *drawn[i];
@@ -198,6 +200,126 @@ std::string logLogChart(const LogLogPlot& plot) {
              fmt::format(R"(fill="{}" font-weight="bold")", kHighlightColor));
   if (drawn.empty()) svg.text(area.left + 8, area.top + 16, "no point with positive values");
   drawSkippedNote(svg, 8, kHeight - 6, skipped, "points with zero or non-finite values");
+  return svg.finish();
+}
+
+std::vector<std::size_t> paretoFront(const std::vector<std::pair<double, double>>& points) {
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return points[a] < points[b];  // by x, then y
+  });
+  // Walking in increasing x, a point is on the front when its y is below every y seen so far.
+  std::vector<std::size_t> front;
+  double best_y = std::numeric_limits<double>::infinity();
+  for (std::size_t i : order)
+    if (points[i].second < best_y) {
+      best_y = points[i].second;
+      front.push_back(i);
+    }
+  return front;
+}
+
+std::string seriesChart(const SeriesPlot& plot) {
+  constexpr std::array<const char*, 8> kSeriesColors = {"#2f5f98", "#e08a1e", "#3a9a5b", "#8e44ad",
+                                                        "#c0392b", "#16a5a5", "#7f6a00", "#555555"};
+  auto ok_x = [&](double v) { return plot.log_x ? drawableOnLog(v) : drawable(v); };
+  auto ok_y = [&](double v) { return plot.log_y ? drawableOnLog(v) : drawable(v); };
+
+  std::vector<std::vector<ChartPoint>> drawn(plot.series.size());
+  std::vector<std::pair<double, double>> all;
+  int skipped = 0;
+  for (std::size_t s = 0; s < plot.series.size(); ++s) {
+    for (const ChartPoint& p : plot.series[s].points) {
+      if (!ok_x(p.x) || !ok_y(p.y)) {
+        ++skipped;
+        continue;
+      }
+      drawn[s].push_back(p);
+      all.emplace_back(p.x, p.y);
+    }
+    std::sort(drawn[s].begin(), drawn[s].end(),
+              [](const ChartPoint& a, const ChartPoint& b) { return a.x < b.x; });
+  }
+
+  double x_low = plot.log_x ? 1 : 0, x_high = plot.log_x ? 10 : 1;
+  double y_low = x_low, y_high = x_high;
+  if (!all.empty()) {
+    auto [xl, xh] = std::minmax_element(all.begin(), all.end());
+    x_low = xl->first;
+    x_high = xh->first;
+    auto [yl, yh] = std::minmax_element(all.begin(), all.end(),
+                                        [](auto& a, auto& b) { return a.second < b.second; });
+    y_low = yl->second;
+    y_high = yh->second;
+  }
+  // Linear axes start at zero when the data are all positive, so bars of time read true.
+  if (!plot.log_y && y_low > 0) y_low = 0;
+  const Axis x_axis = plot.log_x ? logAxis(x_low, x_high) : linearAxis(x_low, x_high);
+  const Axis y_axis = plot.log_y ? logAxis(y_low, y_high) : linearAxis(y_low, y_high);
+
+  double legend_width = 0;
+  for (const ChartSeries& series : plot.series)
+    if (!series.name.empty())
+      legend_width = std::max(legend_width, 28 + kCharWidth * double(series.name.size()));
+  if (plot.front) legend_width = std::max(legend_width, 28 + kCharWidth * 12);
+  constexpr double kWidth = 520, kHeight = 340;
+  const PlotArea area{70, 28, kWidth - 16, kHeight - 62};
+  SvgWriter svg(kWidth + legend_width, kHeight, plot.title);
+  drawTitle(svg, area, plot.title);
+  drawXAxis(svg, area, x_axis, plot.x_label);
+  drawYAxis(svg, area, y_axis, plot.y_label);
+  auto px = [&](double x) { return axisPixel(x_axis, x, area.left, area.right); };
+  auto py = [&](double y) { return axisPixel(y_axis, y, area.bottom, area.top); };
+
+  for (std::size_t s = 0; s < drawn.size(); ++s) {
+    const char* color = kSeriesColors[s % kSeriesColors.size()];
+    if (drawn[s].size() >= 2) {
+      std::vector<std::pair<double, double>> line;
+      for (const ChartPoint& p : drawn[s]) line.emplace_back(px(p.x), py(p.y));
+      svg.polyline(line, fmt::format(R"(stroke="{}" stroke-width="1.5" fill="none")", color));
+    }
+    for (const ChartPoint& p : drawn[s]) {
+      std::string tooltip = fmt::format("{}: {} {}, {} {}", p.label, plot.x_label,
+                                        formatNumber(p.x), plot.y_label, formatNumber(p.y));
+      if (!plot.series[s].name.empty()) tooltip = plot.series[s].name + " — " + tooltip;
+      svg.circle(px(p.x), py(p.y), 3.5, fill(color), tooltip);
+    }
+  }
+  if (plot.front && all.size() >= 2) {
+    std::string data;
+    const std::vector<std::size_t> front = paretoFront(all);
+    for (std::size_t i = 0; i < front.size(); ++i) {
+      const auto& [x, y] = all[front[i]];
+      data += i == 0 ? SvgWriter::moveTo(px(x), py(y))
+                     : SvgWriter::horizontalTo(px(x)) + SvgWriter::verticalTo(py(y));
+    }
+    svg.path(data, fmt::format(R"(stroke="{}" stroke-width="2" stroke-dasharray="5 3" fill="none")",
+                               kHighlightColor));
+    for (std::size_t i : front)
+      svg.circle(px(all[i].first), py(all[i].second), 6,
+                 fmt::format(R"(fill="none" stroke="{}" stroke-width="1.5")", kHighlightColor));
+  }
+
+  // Legend to the right of the plot.
+  double legend_y = area.top + 4;
+  for (std::size_t s = 0; s < plot.series.size(); ++s) {
+    if (plot.series[s].name.empty()) continue;
+    svg.rect(kWidth, legend_y, 12, 12, fill(kSeriesColors[s % kSeriesColors.size()]));
+    svg.text(kWidth + 18, legend_y + 10, plot.series[s].name);
+    legend_y += 18;
+  }
+  if (plot.front) {
+    svg.line(
+        kWidth, legend_y + 6, kWidth + 12, legend_y + 6,
+        fmt::format(R"(stroke="{}" stroke-width="2" stroke-dasharray="5 3")", kHighlightColor));
+    svg.text(kWidth + 18, legend_y + 10, "Pareto front");
+  }
+  if (all.empty())
+    svg.text(area.left + 8, area.top + 16,
+             plot.log_x || plot.log_y ? "no point with values the axes can show"
+                                      : "no point with finite values");
+  drawSkippedNote(svg, 8, kHeight - 6, skipped, "points without a drawable value");
   return svg.finish();
 }
 

@@ -21,8 +21,9 @@ struct PassBar {
 };
 
 // Horizontal bars of the median time per pass with whiskers from the first to the third
-// quartile, one row per pass in the given (depth-first) order, names indented by depth.
-std::string passTimingChart(const std::vector<PassBar>& passes);
+// quartile, one row per pass in the given (depth-first) order, names indented by depth. `unit`
+// is what one sample times ("frame", "iteration").
+std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view unit = "frame");
 
 struct FittedSlope {
   double slope = 0;
@@ -39,6 +40,30 @@ struct LogLogPlot {
   std::optional<FittedSlope> fit;
 };
 std::string logLogChart(const LogLogPlot& plot);
+
+// Figure charts of a suite ([[chart]]): points of several series on linear or log axes, each
+// series joined in x order, with a legend; with `front`, the Pareto front over all series (the
+// points no other point beats in both x and y, e.g. error against frame time) drawn as a
+// highlighted step line.
+struct ChartPoint {
+  double x = 0, y = 0;
+  std::string label;  // the job, for the tooltip
+};
+struct ChartSeries {
+  std::string name;  // empty for a single unnamed series
+  std::vector<ChartPoint> points;
+};
+struct SeriesPlot {
+  std::string title;
+  std::string x_label, y_label;
+  bool log_x = false, log_y = false;
+  bool front = false;
+  std::vector<ChartSeries> series;
+};
+std::string seriesChart(const SeriesPlot& plot);
+
+// Indices (into `points`) of the Pareto front minimising both x and y, in increasing x.
+std::vector<std::size_t> paretoFront(const std::vector<std::pair<double, double>>& points);
 
 // A value over runs, oldest first: x is the run index, labelled with `label` (a short commit);
 // the last point (this run) is highlighted.

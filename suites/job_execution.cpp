@@ -224,28 +224,23 @@ rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnviro
   settings.height = p.height;
   settings.frames = p.job->settings.frames;
   settings.warmup_frames = p.job->settings.warmup;
-  settings.iterations =
-      p.job->settings.checkpoints.empty() ? 1 : p.job->settings.checkpoints.back();
+  settings.iterations = p.job->settings.iterationCount();
+  settings.capture_after = p.job->settings.checkpoints;
   settings.context = env.gl;
   return settings;
 }
 
-// An iterative technique's error after each checkpoint's number of iterations (one frame each).
-reports::Convergence techniqueConvergence(const PreparedJob& p, const JobEnvironment& env,
+// An iterative technique's error after each checkpoint's number of iterations, from the images
+// the run captured on its way.
+reports::Convergence techniqueConvergence(const PreparedJob& p,
+                                          const std::vector<rt::IterationCapture>& captures,
                                           const image::Image& reference) {
   reports::Convergence convergence;
   convergence.x_label = "iterations";
-  for (int iterations : p.job->settings.checkpoints) {
-    rt::TechniqueRunSettings settings = techniqueSettings(p, env);
-    settings.frames = 1;
-    settings.warmup_frames = 0;
-    settings.iterations = iterations;
-    const rt::TechniqueRunResult run =
-        rt::runTechnique(p.scene, *p.technique, *p.parameters, settings);
-    convergence.points.push_back({double(iterations),
-                                  measure(reference, run.image, p.job->settings.metrics).values,
-                                  run.iterate_ms * 1e-3});
-  }
+  for (const rt::IterationCapture& capture : captures)
+    convergence.points.push_back({double(capture.iterations),
+                                  measure(reference, capture.image, p.job->settings.metrics).values,
+                                  capture.iterate_ms * 1e-3});
   fitConvergence(convergence);
   return convergence;
 }
@@ -265,13 +260,22 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::
   result.prepare_ms = run.prepare_ms;
   result.iterate_ms = run.iterate_ms;
   result.iterations = run.iterations;
+  if (run.iteration_profile.measured_frames > 0)
+    result.iteration_timings = metrics::passTimingsJson(
+        run.iteration_profile, metrics::summarizeProfile(run.iteration_profile));
+  for (const rt::TechniqueStatistic& statistic : run.statistics)
+    result.statistics.emplace_back(statistic.name, statistic.value);
 
   const fs::path exr = job_dir / "image.exr";
   image::Metadata metadata = rt::techniqueOutputMetadata(
       p.scene, *p.technique, *p.parameters, settings, run, rows.front().reported.median);
-  const fs::path png = rt::writeTechniqueOutputs(exr, run, metadata);
+  const rt::TechniqueOutputFiles files = rt::writeTechniqueOutputs(exr, run, metadata);
   result.outputs.image = relativePath(env.run_dir, exr);
-  result.outputs.image_png = relativePath(env.run_dir, png);
+  result.outputs.image_png = relativePath(env.run_dir, files.png);
+  for (const rt::AuxiliaryImageFiles& aux : files.auxiliary)
+    result.auxiliary_images.push_back({aux.name, aux.description,
+                                       relativePath(env.run_dir, aux.exr),
+                                       relativePath(env.run_dir, aux.png)});
   const fs::path timings = job_dir / "timings.json";
   image::writeTextFile(timings, result.timings.dump(2) + "\n");
   result.outputs.timings_json = relativePath(env.run_dir, timings);
@@ -283,7 +287,7 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::
   writeComparisonImages(env.run_dir, job_dir, reference, run.image, report, result.outputs);
   measureAgainstFullReference(p, env, run.image, result);
   if (!p.job->settings.checkpoints.empty())
-    result.convergence = techniqueConvergence(p, env, reference.mean);
+    result.convergence = techniqueConvergence(p, run.captures, reference.mean);
 }
 
 std::string jobHash(const PreparedJob& p) {
@@ -305,6 +309,7 @@ std::string jobHash(const PreparedJob& p) {
   hasher.addU64(s.reference.seed);
   for (const std::string& metric : s.metrics) hasher.addString(metric);
   for (int checkpoint : s.checkpoints) hasher.addU64(std::uint64_t(checkpoint));
+  if (s.iterations) hasher.addString(fmt::format("iterations={}", *s.iterations));
   return hasher.hexDigest();
 }
 
@@ -328,6 +333,10 @@ PreparedJob prepareJob(const Job& job) {
         throw InputError(fmt::format(
             "checkpoints are iteration counts of an iterative technique, and '{}' renders in "
             "one step; remove checkpoints from case '{}'",
+            job.technique, job.case_name));
+      if (job.settings.iterations && !technique->iterative())
+        throw InputError(fmt::format(
+            "'{}' renders in one step and takes no iterations; remove iterations from case '{}'",
             job.technique, job.case_name));
     }
   } catch (const InputError& e) {

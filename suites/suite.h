@@ -58,6 +58,13 @@ struct RunSettings {
   // Optional series, strictly increasing: spp of a reference case, iterations of an iterative
   // technique.
   std::vector<int> checkpoints;
+  // Iterations of an iterative technique before its measured frames; absent: the last
+  // checkpoint, else 1.
+  std::optional<int> iterations;
+
+  int iterationCount() const {
+    return iterations.value_or(checkpoints.empty() ? 1 : checkpoints.back());
+  }
 };
 
 struct Case {
@@ -80,6 +87,8 @@ struct Suite {
   reports::Tolerances tolerances;
   // [[paper]]: the source document's numbers, shown beside ours in the report.
   std::vector<reports::PaperValue> paper;
+  // [[chart]]: figures drawn over the suite's jobs in the report.
+  std::vector<reports::ChartSpec> charts;
 };
 
 }  // namespace gib::suites

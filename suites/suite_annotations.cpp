@@ -1,8 +1,12 @@
 #include "suites/suite_annotations.h"
 
+#include "reports/quantity.h"
+
 #include "metrics/metric_registry.h"
 
 #include <fmt/format.h>
+
+#include <fnmatch.h>
 
 #include <algorithm>
 #include <string>
@@ -115,6 +119,43 @@ std::vector<reports::PaperValue> readPaperValues(const TomlTableReader& root,
     values.push_back(std::move(v));
   }
   return values;
+}
+
+std::vector<reports::ChartSpec> readCharts(const TomlTableReader& root,
+                                           const std::vector<Job>& jobs) {
+  std::vector<reports::ChartSpec> charts;
+  const std::vector<const toml::table*> entries = tomlTableArray(root, "chart");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const TomlTableReader t(root.errors(), *entries[i], "chart",
+                            fmt::format("[[chart]] entry {}", i + 1),
+                            {"title", "jobs", "x", "y", "series", "log_x", "log_y", "front"});
+    reports::ChartSpec c;
+    c.title = t.string(t.require("title", "\"Fig. 7: time per iteration\""), "title");
+    auto quantity = [&](std::string_view key, std::string_view example) {
+      const toml::node& node = t.require(key, example);
+      std::string value = t.string(node, key);
+      if (const std::optional<std::string> error = reports::quantitySyntaxError(value))
+        t.errors().fail(node, fmt::format("{} '{}' {}", t.path(key), value, *error),
+                        "name a metric value (relmse, full:relmse), frame or a pass, iteration "
+                        "or iteration/<pass>, statistic:<name> or parameter:<name>");
+      return value;
+    };
+    c.x = quantity("x", "\"statistic:vertices\"");
+    c.y = quantity("y", "\"iteration\"");
+    if (t.find("series")) c.series = quantity("series", "\"parameter:selection\"");
+    if (const toml::node* n = t.find("jobs")) {
+      c.jobs = t.string(*n, "jobs");
+      if (std::none_of(jobs.begin(), jobs.end(),
+                       [&](const Job& j) { return fnmatch(c.jobs.c_str(), j.id.c_str(), 0) == 0; }))
+        t.errors().fail(*n, fmt::format("chart.jobs '{}' matches no job of this suite", c.jobs),
+                        "use a glob over job ids as `gibench run --list` prints them");
+    }
+    if (const toml::node* n = t.find("log_x")) c.log_x = t.boolean(*n, "log_x");
+    if (const toml::node* n = t.find("log_y")) c.log_y = t.boolean(*n, "log_y");
+    if (const toml::node* n = t.find("front")) c.front = t.boolean(*n, "front");
+    charts.push_back(std::move(c));
+  }
+  return charts;
 }
 
 }  // namespace gib::suites

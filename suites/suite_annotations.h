@@ -26,6 +26,20 @@ namespace gib::suites {
 
 reports::Tolerances readTolerances(const TomlTableReader& root, const toml::node& node);
 
+// [[chart]]: a figure of the suite's jobs (reports::ChartSpec). Checks the quantities' syntax
+// and that the jobs glob matches a job.
+//
+//   [[chart]]
+//   title = "Fig. 7: time per iteration against vertex count"
+//   jobs = "cornell-stochastic_radiosity/*"   # optional glob over job ids (default: all)
+//   x = "statistic:vertices"
+//   y = "iteration"
+//   series = "parameter:selection"            # optional: one line per value
+//   log_x = true                              # optional, default false; log_y likewise
+//   front = false                             # optional: mark the Pareto front
+std::vector<reports::ChartSpec> readCharts(const TomlTableReader& root,
+                                           const std::vector<Job>& jobs);
+
 // Checks that every entry names a job of `jobs`.
 std::vector<reports::PaperValue> readPaperValues(const TomlTableReader& root,
                                                  const std::vector<Job>& jobs);

@@ -35,6 +35,9 @@ constexpr long long kMaxSpp = 1LL << 30;        // reference samples per pixel
 constexpr long long kMaxBounces = 1000000;      // beyond this, write "unlimited"
 constexpr std::size_t kMaxJobsPerCase = 10000;  // a sweep beyond this is surely a mistake
 
+// Enough for any convergence study; a typo of 10^7 would run for days.
+constexpr long long kMaxIterations = 100000;
+
 const std::vector<std::string> kSettingKeys = {"width",  "height", "metrics",
                                                "frames", "warmup", "reference"};
 const std::vector<std::string> kReferenceKeys = {"spp", "seed", "min_bounces", "max_bounces"};
@@ -316,7 +319,8 @@ Case readCase(const TomlErrorReporter& errors, const toml::table& table, std::si
               const Settings& defaults, const fs::path& base_dir) {
   const TomlTableReader t(
       errors, table, "case", fmt::format("[[case]] entry {}", index + 1),
-      withKeys({"name", "scene", "scene_set", "technique", "set", "checkpoints"}, kSettingKeys));
+      withKeys({"name", "scene", "scene_set", "technique", "set", "checkpoints", "iterations"},
+               kSettingKeys));
   Case c;
   c.line = static_cast<int>(std::max<toml::source_index>(table.source().begin.line, 1));
 
@@ -373,6 +377,18 @@ Case readCase(const TomlErrorReporter& errors, const toml::table& table, std::si
                               c.settings.checkpoints.back(), c.settings.reference.spp),
                   "a reference case's checkpoints are spp counts up to its reference spp");
   }
+  if (const toml::node* n = t.find("iterations")) {
+    if (c.technique == kReferenceTechnique)
+      errors.fail(*n, "a reference case takes no iterations",
+                  "give the reference's spp in [case.reference]");
+    c.settings.iterations = static_cast<int>(t.integer(*n, "iterations", 0, kMaxIterations, "50"));
+    if (!c.settings.checkpoints.empty() && c.settings.checkpoints.back() > *c.settings.iterations)
+      errors.fail(*n,
+                  fmt::format("iterations = {} is below the last checkpoint, {}",
+                              *c.settings.iterations, c.settings.checkpoints.back()),
+                  "checkpoints are captured on the way to the job's iterations; raise iterations "
+                  "or drop the larger checkpoints");
+  }
 
   if (jobCount(c) > kMaxJobsPerCase)
     errors.fail(table,
@@ -387,8 +403,9 @@ Case readCase(const TomlErrorReporter& errors, const toml::table& table, std::si
 Suite loadSuiteFile(const std::filesystem::path& path) {
   const TomlErrorReporter errors(path.string());
   const toml::table document = parseTomlFile(errors, path, "suite file");
-  const TomlTableReader root(errors, document, "", "the top level of the suite file",
-                             {"name", "description", "defaults", "case", "tolerances", "paper"});
+  const TomlTableReader root(
+      errors, document, "", "the top level of the suite file",
+      {"name", "description", "defaults", "case", "tolerances", "paper", "chart"});
 
   Suite suite;
   suite.file = fs::absolute(path).lexically_normal();
@@ -429,7 +446,9 @@ Suite loadSuiteFile(const std::filesystem::path& path) {
     suite.cases.push_back(std::move(c));
   }
   if (const toml::node* n = root.find("tolerances")) suite.tolerances = readTolerances(root, *n);
-  suite.paper = readPaperValues(root, expandSuite(suite));
+  const std::vector<Job> jobs = expandSuite(suite);
+  suite.paper = readPaperValues(root, jobs);
+  suite.charts = readCharts(root, jobs);
   return suite;
 }
 

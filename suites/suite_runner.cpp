@@ -278,6 +278,7 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   run.tolerances = suite.tolerances;
   for (const reports::PaperValue& value : suite.paper)
     if (run.findJob(value.job)) run.paper.push_back(value);
+  run.charts = suite.charts;
   run.primary_metric = primaryMetric(run.jobs);
 
   outcome.results_file = dir.path() / "results.json";

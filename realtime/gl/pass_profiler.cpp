@@ -7,11 +7,15 @@
 
 namespace gib::rt::gl {
 
-PassProfiler::PassProfiler(bool precise, int latency) : precise_(precise), latency_(latency) {
+PassProfiler::PassProfiler(bool precise, int latency, std::string_view root_name)
+    : precise_(precise), latency_(latency) {
   if (latency < 0) throw std::invalid_argument("profiler latency must be 0 or more frames");
+  if (root_name.empty() || root_name.find('/') != std::string_view::npos)
+    throw std::invalid_argument("the profiler's root name must be non-empty and without '/'");
   record_.precise = precise;
   record_.reported_clock = precise ? "cpu" : "gpu";
-  record_.passes.push_back(PassRecord{"frame", "frame", 0, {}, {}, {}});
+  record_.passes.push_back(
+      PassRecord{std::string(root_name), std::string(root_name), 0, {}, {}, {}});
   parents_.push_back(0);
 }
 

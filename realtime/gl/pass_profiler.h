@@ -28,8 +28,11 @@ namespace gib::rt::gl {
 class PassProfiler {
  public:
   // `latency`: frames whose queries may be in flight before beginFrame waits for the oldest
-  // (0 waits for every frame). Throws std::invalid_argument if negative.
-  explicit PassProfiler(bool precise = false, int latency = 4);
+  // (0 waits for every frame). Throws std::invalid_argument if negative. `root_name` names the
+  // unit being timed, passes[0] of the record: "frame", or "iteration" for the steps of an
+  // iterative technique.
+  explicit PassProfiler(bool precise = false, int latency = 4,
+                        std::string_view root_name = "frame");
 
   // Ends its pass when destroyed. A destructor must not throw, so a pass that ends while one
   // opened after it is still open is reported by endFrame (std::logic_error).

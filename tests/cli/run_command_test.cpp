@@ -267,6 +267,14 @@ technique = "direct"
 checkpoints = [1, 2]
 )");
   expectRefused({}, "checkpoints are iteration counts of an iterative technique", dir_ / "c");
+  writeFile(suite(), std::string(kTinySuite) + R"(
+[[case]]
+name = "bad"
+scene = "cornell"
+technique = "direct"
+iterations = 5
+)");
+  expectRefused({}, "renders in one step and takes no iterations", dir_ / "d");
 
   const test::CommandResult missing =
       test::runGibench({"run", (dir_ / "nope.toml").string()}, dir_.path());

@@ -77,6 +77,22 @@ TEST(ImageMetrics, GaussianNoiseGivesItsVarianceAsMse) {
   EXPECT_NEAR(computeMae(r, t).value, 0.1 * std::sqrt(2 / M_PI), 0.003);
 }
 
+TEST(ImageMetrics, EnergyRatioIsTheRatioOfMeanLuminances) {
+  const image::Image r = makeReference();
+  EXPECT_NEAR(computeEnergyRatio(r, transform(r, 0.8f, 0.0f)).value, 0.8, 1e-6);
+  EXPECT_NEAR(computeEnergyRatio(r, r).value, 1.0, 1e-12);
+  // Light moved from one pixel to another keeps the energy; a non-finite pixel is left out of
+  // both means.
+  image::Image moved = r;
+  moved.pixel(0, 0)[1] += 0.5f;
+  moved.pixel(5, 5)[1] -= 0.5f;
+  EXPECT_NEAR(computeEnergyRatio(r, moved).value, 1.0, 1e-6);
+  image::Image broken = r;
+  broken.pixel(2, 2)[0] = std::numeric_limits<float>::infinity();
+  EXPECT_NEAR(computeEnergyRatio(r, broken).value, 1.0, 1e-12);
+  EXPECT_TRUE(std::isnan(computeEnergyRatio(transform(r, 0.0f, 0.0f), r).value));
+}
+
 TEST(ImageMetrics, PsnrOfAConstantDisplayOffset) {
   // A reference in the sRGB curve's linear toe region (≤ 0.0031308) and a test offset there by
   // δ: display values differ by 12.92·δ, so PSNR = −20·log10(12.92·δ).

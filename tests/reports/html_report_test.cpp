@@ -149,6 +149,31 @@ TEST_F(HtmlReport, JobPageHasMetricsImagesTimingsConvergenceAndPaperValues) {
   EXPECT_NE(html.find("href=\"../index.html\""), std::string::npos);
 }
 
+TEST_F(HtmlReport, FigureSuitesShowChartsIterationTimingsAndAuxiliaryImages) {
+  const std::string index = readText(write());
+  // The index's figures: both charts, a series per shadow filter, the front, the paper table.
+  EXPECT_NE(index.find("id=\"figures\""), std::string::npos);
+  EXPECT_NE(index.find(">Frame time against vertex count<"), std::string::npos);
+  EXPECT_NE(index.find(">shadow = pcf<"), std::string::npos);
+  EXPECT_NE(index.find(">shadow = vsm<"), std::string::npos);
+  EXPECT_NE(index.find(">Pareto front<"), std::string::npos);
+  EXPECT_NE(index.find(">Radeon 9800 Pro<"), std::string::npos);
+  EXPECT_EQ(test::markupProblem(index), "");
+
+  const std::string pcf = jobPage(1);
+  EXPECT_NE(pcf.find("id=\"iteration-timings\""), std::string::npos);
+  EXPECT_NE(pcf.find("ms per iteration: median"), std::string::npos);
+  EXPECT_NE(pcf.find("share of iteration"), std::string::npos);
+  EXPECT_NE(pcf.find("src=\"../jobs/" + results_.jobs[1].slug + "/image-atlas.png\""),
+            std::string::npos);
+  EXPECT_NE(pcf.find("the radiance atlas after 8 iterations"), std::string::npos);
+  EXPECT_NE(pcf.find("vertices 3000, atlas_texels 16000"), std::string::npos) << pcf;
+  // A job that does not iterate has neither.
+  const std::string vsm = jobPage(2);
+  EXPECT_EQ(vsm.find("id=\"iteration-timings\""), std::string::npos);
+  EXPECT_EQ(vsm.find("id=\"auxiliary\""), std::string::npos);
+}
+
 TEST_F(HtmlReport, MissingOptionalOutputsAreOmittedNotBroken) {
   fs::remove(dir_ / results_.jobs[1].outputs.difference_png);  // listed, but gone
   write();
@@ -166,6 +191,7 @@ TEST_F(HtmlReport, MissingOptionalOutputsAreOmittedNotBroken) {
 
   results_.jobs[1].convergence.reset();
   results_.jobs[1].outputs = {};
+  results_.jobs[1].auxiliary_images.clear();
   write();
   const std::string bare = jobPage(1);
   EXPECT_EQ(bare.find("<img"), std::string::npos);

@@ -75,6 +75,15 @@ TEST(ResultsDiff, LowerSsimAndPsnrAreRegressions) {
   EXPECT_EQ(metricVerdict({{"psnr", 40}}, {{"psnr", 30}}), Verdict::kRegressed);
 }
 
+TEST(ResultsDiff, EnergyRatioIsJudgedByItsDistanceFromOne) {
+  // Gaining light is as wrong as losing it: 1.0 → 1.2 and 1.0 → 0.8 regress, 0.8 → 0.95 and
+  // 1.2 → 1.05 improve.
+  EXPECT_EQ(metricVerdict({{"energy_ratio", 1.0}}, {{"energy_ratio", 1.2}}), Verdict::kRegressed);
+  EXPECT_EQ(metricVerdict({{"energy_ratio", 1.0}}, {{"energy_ratio", 0.8}}), Verdict::kRegressed);
+  EXPECT_EQ(metricVerdict({{"energy_ratio", 0.8}}, {{"energy_ratio", 0.95}}), Verdict::kImproved);
+  EXPECT_EQ(metricVerdict({{"energy_ratio", 1.2}}, {{"energy_ratio", 1.05}}), Verdict::kImproved);
+}
+
 TEST(ResultsDiff, FullReferenceValuesAreComparedUnderTheirOwnName) {
   RunResults base = runWith("base", {{"relmse", 0.02}});
   RunResults next = runWith("next", {{"relmse", 0.02}});

@@ -52,6 +52,25 @@ TEST(ResultsJson, RoundTripsEveryFieldThroughAFile) {
   EXPECT_EQ(readResultsFile(dir.path()), results);
 }
 
+TEST(ResultsJson, FilesFromBeforeTheFigureFieldsStillRead) {
+  // charts, iteration_timings, statistics and auxiliary_images came after version 1: a file
+  // without them reads with their defaults (docs/results-schema.md, compatibility).
+  RunResults results = test::richResults();
+  nlohmann::ordered_json document = resultsToJson(results);
+  document.erase("charts");
+  for (auto& job : document["jobs"]) {
+    job.erase("iteration_timings");
+    job.erase("statistics");
+    job.erase("auxiliary_images");
+  }
+  const RunResults back = resultsFromJson(document, "memory");
+  EXPECT_TRUE(back.charts.empty());
+  EXPECT_TRUE(back.jobs[0].iteration_timings.is_null());
+  EXPECT_TRUE(back.jobs[0].statistics.empty());
+  EXPECT_TRUE(back.jobs[0].auxiliary_images.empty());
+  EXPECT_EQ(back.jobs[0].metrics, results.jobs[0].metrics);
+}
+
 TEST(ResultsJson, KeepsMetricAndParameterOrder) {
   RunResults results = test::richResults();
   results.jobs[0].metrics = {{"relmse", 1}, {"flip_mean", 2}, {"mae", 3}};

@@ -183,5 +183,55 @@ TEST(SvgCharts, TextIsEscaped) {
   EXPECT_EQ(svg.find("<tag>"), std::string::npos);
 }
 
+TEST(SvgCharts, ParetoFrontKeepsThePointsNoOtherBeatsInBothCoordinates) {
+  // (time, error): (1, 9) and (2, 4) and (5, 1) are on the front; (3, 6) is beaten by (2, 4),
+  // (6, 2) by (5, 1), and (2, 5) by (2, 4).
+  const std::vector<std::pair<double, double>> points = {{3, 6}, {1, 9}, {6, 2},
+                                                         {2, 4}, {5, 1}, {2, 5}};
+  const std::vector<std::size_t> front = paretoFront(points);
+  EXPECT_EQ(front, (std::vector<std::size_t>{1, 3, 4}));
+  EXPECT_TRUE(paretoFront({}).empty());
+}
+
+SeriesPlot twoSeriesPlot() {
+  SeriesPlot plot;
+  plot.title = "Time per iteration";
+  plot.x_label = "vertices";
+  plot.y_label = "ms per iteration";
+  plot.series = {{"selection = gpu", {{30, 2, "a"}, {3000, 5, "b"}, {300, 3, "c"}}},
+                 {"selection = cpu", {{30, 20, "d"}, {3000, 24, "e"}}}};
+  return plot;
+}
+
+TEST(SvgCharts, SeriesChartDrawsEachSeriesAsALineWithALegend) {
+  const std::string svg = seriesChart(twoSeriesPlot());
+  expectWellFormedChart(svg);
+  EXPECT_EQ(countOccurrences(svg, "<circle "), 5);
+  EXPECT_EQ(countOccurrences(svg, "<polyline "), 2);
+  EXPECT_NE(svg.find(">selection = gpu<"), std::string::npos);
+  EXPECT_NE(svg.find(">selection = cpu<"), std::string::npos);
+  EXPECT_EQ(svg.find("Pareto"), std::string::npos);
+}
+
+TEST(SvgCharts, SeriesChartOnLogAxesDropsWhatTheyCannotShowWithANote) {
+  SeriesPlot plot = twoSeriesPlot();
+  plot.log_x = plot.log_y = true;
+  plot.front = true;
+  plot.series[0].points.push_back({0, 1, "zero"});
+  plot.series[1].points.push_back({100, kNaN, "nan"});
+  const std::string svg = seriesChart(plot);
+  expectWellFormedChart(svg);
+  // (30, 2) beats every other point in both coordinates: the front is that one point, ringed.
+  EXPECT_EQ(countOccurrences(svg, "<circle "), 5 + 1);
+  EXPECT_NE(svg.find("points without a drawable value not shown: 2"), std::string::npos);
+  EXPECT_NE(svg.find(">Pareto front<"), std::string::npos);
+  EXPECT_NE(svg.find(">1000<"), std::string::npos);  // x decades
+
+  plot.series = {};
+  const std::string empty = seriesChart(plot);
+  expectWellFormedChart(empty);
+  EXPECT_NE(empty.find("no point with values the axes can show"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace gib::reports

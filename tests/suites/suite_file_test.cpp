@@ -247,7 +247,7 @@ TEST_F(SuiteFileTest, UnknownKeysListTheAllowedOnes) {
   EXPECT_THAT(
       expectErrorAt(replaced(kSuite, "checkpoints = [4", "checkpoint = [4"), "checkpoint = [4"),
       HasSubstr("unknown key 'checkpoint' in [[case]] entry 1; allowed keys: name, scene, "
-                "scene_set, technique, set, checkpoints, width"));
+                "scene_set, technique, set, checkpoints, iterations, width"));
   EXPECT_THAT(expectErrorAt(replaced(kSuite, "[[case]]", "[[cases]]"), "[[cases]]"),
               HasSubstr("unknown key 'cases'"));
 }
@@ -524,6 +524,76 @@ quantity = "frame"
 source = "A paper"
 )";
   EXPECT_THAT(errorOf(no_value), HasSubstr("value"));
+}
+
+TEST_F(SuiteFileTest, ChartsNameQuantitiesAndJobsOfTheSuite) {
+  const Suite suite = load(std::string(kSuite) + R"(
+[[chart]]
+title = "Frame time by shadow filter"
+jobs = "direct-sweep/*"
+x = "parameter:light_samples"
+y = "frame"
+series = "parameter:shadow"
+log_y = true
+front = true
+)");
+  ASSERT_EQ(suite.charts.size(), 1u);
+  const reports::ChartSpec& c = suite.charts[0];
+  EXPECT_EQ(c.title, "Frame time by shadow filter");
+  EXPECT_EQ(c.jobs, "direct-sweep/*");
+  EXPECT_EQ(c.x, "parameter:light_samples");
+  EXPECT_EQ(c.y, "frame");
+  EXPECT_EQ(c.series, "parameter:shadow");
+  EXPECT_FALSE(c.log_x);
+  EXPECT_TRUE(c.log_y);
+  EXPECT_TRUE(c.front);
+
+  const std::string chart = std::string(kSuite) + "\n[[chart]]\ntitle = \"t\"\n";
+  EXPECT_THAT(expectErrorAt(chart + "x = \"frame\"\ny = \"statistic:\"\n", "y = \"statistic:"),
+              HasSubstr("chart.y 'statistic:' names no statistic"));
+  EXPECT_THAT(expectErrorAt(chart + "x = \"fulll:relmse\"\ny = \"frame\"\n", "x = \"fulll"),
+              HasSubstr("unknown prefix 'fulll:'"));
+  EXPECT_THAT(
+      expectErrorAt(chart + "x = \"frame\"\ny = \"relmse\"\njobs = \"chamber-*\"\n", "jobs ="),
+      HasSubstr("chart.jobs 'chamber-*' matches no job of this suite"));
+  EXPECT_THAT(expectErrorAt(chart + "x = \"frame\"\ny = \"relmse\"\nlog_x = \"yes\"\n", "log_x"),
+              HasSubstr("chart.log_x must be true or false"));
+  EXPECT_THAT(expectErrorAt(chart + "x = \"frame\"\ny = \"relmse\"\ncolour = \"red\"\n", "colour"),
+              HasSubstr("colour"));
+  EXPECT_THAT(errorOf(chart + "y = \"relmse\"\n"), HasSubstr("chart.x"));
+}
+
+TEST_F(SuiteFileTest, IterationsAreForTechniqueCasesAndReachTheLastCheckpoint) {
+  const std::string reference_iterations = std::string(kSuite) + R"(
+[[case]]
+name = "ref-iterations"
+scene = "cornell"
+technique = "reference"
+iterations = 10
+)";
+  EXPECT_THAT(expectErrorAt(reference_iterations, "iterations = 10"),
+              HasSubstr("a reference case takes no iterations"));
+  const std::string below = std::string(kSuite) + R"(
+[[case]]
+name = "below"
+scene = "cornell"
+technique = "direct"
+checkpoints = [1, 8, 64]
+iterations = 32
+)";
+  EXPECT_THAT(expectErrorAt(below, "iterations = 32"),
+              HasSubstr("iterations = 32 is below the last checkpoint, 64"));
+  const Suite suite = load(std::string(kSuite) + R"(
+[[case]]
+name = "fifty"
+scene = "cornell"
+technique = "direct"
+checkpoints = [1, 8]
+iterations = 50
+)");
+  EXPECT_EQ(suite.cases.back().settings.iterationCount(), 50);
+  EXPECT_EQ(suite.cases.front().settings.iterationCount(), 64);  // the last checkpoint
+  EXPECT_EQ(suite.cases[1].settings.iterationCount(), 1);        // neither given
 }
 
 std::filesystem::path repositorySuite(const char* name) {

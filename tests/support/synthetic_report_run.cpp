@@ -179,6 +179,28 @@ reports::RunResults syntheticReportResults(const std::string& run_id, const std:
   vsm.convergence->fit_slope_ci95 = std::numeric_limits<double>::infinity();
   results.jobs.push_back(vsm);
 
+  // The PCF job also iterates, with per-iteration passes, counts and an auxiliary image, so the
+  // report's figure parts are exercised.
+  reports::JobResult& pcf_job = results.jobs[1];
+  pcf_job.iterations = 8;
+  pcf_job.iterate_ms = 16.0;
+  pcf_job.iteration_timings = nestedPassTimings(0.1, 8);
+  for (auto& pass : pcf_job.iteration_timings["passes"]) {
+    std::string path = pass["path"];
+    path.replace(0, 5, "iteration");  // "frame…" → "iteration…"
+    pass["path"] = path;
+    if (pass["depth"] == 0) pass["name"] = "iteration";
+  }
+  pcf_job.statistics = {{"vertices", 3000}, {"atlas_texels", 16000}};
+  vsm.statistics = {{"vertices", 300}, {"atlas_texels", 16000}};
+  results.jobs[2].statistics = vsm.statistics;
+  pcf_job.auxiliary_images = {{"atlas", "the radiance atlas after 8 iterations",
+                               "jobs/" + pcf_job.slug + "/image-atlas.exr",
+                               "jobs/" + pcf_job.slug + "/image-atlas.png"}};
+  results.charts = {{"Frame time against vertex count", "cornell-direct/*", "statistic:vertices",
+                     "frame", "parameter:shadow", true, false, false},
+                    {"Error against frame time", "*", "frame", "relmse", "", false, true, true}};
+
   const std::string pcf = results.jobs[1].id;
   results.paper = {{pcf, "relmse", 0.002, "", "Nijasure et al. 2005, Table 1", "64x64 grid"},
                    {pcf, "frame", 40.0, "ms", "Nijasure et al. 2005, Table 1", "Radeon 9800 Pro"}};
@@ -190,8 +212,10 @@ void writeSyntheticOutputs(const std::filesystem::path& run_dir,
   for (const reports::JobResult& job : results.jobs) {
     const reports::JobOutputs& out = job.outputs;
     int variant = 0;
-    for (const std::string* path :
-         {&out.image_png, &out.reference_png, &out.difference_png, &out.flip_png}) {
+    std::vector<const std::string*> pngs = {&out.image_png, &out.reference_png, &out.difference_png,
+                                            &out.flip_png};
+    for (const reports::AuxiliaryImageOutput& aux : job.auxiliary_images) pngs.push_back(&aux.png);
+    for (const std::string* path : pngs) {
       ++variant;
       if (path->empty()) continue;
       std::filesystem::create_directories((run_dir / *path).parent_path());

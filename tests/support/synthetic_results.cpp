@@ -100,6 +100,12 @@ reports::RunResults richResults() {
   technique.iterations = 4;
   technique.outputs = {"jobs/a.exr",    "jobs/a.png",    "jobs/ref.png",
                        "jobs/diff.png", "jobs/flip.png", "jobs/a-timings.json"};
+  technique.iteration_timings = frameTimingsJson({1.5, 2.0, 2.5, 3.0}, "cpu");
+  technique.iteration_timings["passes"][0]["name"] = "iteration";
+  technique.iteration_timings["passes"][0]["path"] = "iteration";
+  technique.statistics = {{"vertices", 1536}, {"atlas_texels", 12000}};
+  technique.auxiliary_images = {
+      {"atlas", "the radiance atlas", "jobs/a-atlas.exr", "jobs/a-atlas.png"}};
 
   reports::JobResult reference;
   reference.id = "cornell-reference";
@@ -136,6 +142,8 @@ reports::RunResults richResults() {
   run.tolerances.timing = {0.15, 0.001};
   run.paper = {{"cornell-direct/shadow=pcf", "frame", 26.0, "ms", "Nijasure et al. 2005, Table 1",
                 "Radeon 9800 Pro"}};
+  run.charts = {{"Frame time against light samples", "cornell-direct/*", "parameter:light_samples",
+                 "frame", "parameter:shadow", true, false, true}};
   return run;
 }
 

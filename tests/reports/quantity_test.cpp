@@ -1,0 +1,56 @@
+#include "reports/quantity.h"
+
+#include "support/synthetic_results.h"
+
+#include <gtest/gtest.h>
+
+namespace gib::reports {
+namespace {
+
+TEST(Quantity, NamesEveryKindOfNumberOfAJob) {
+  const JobResult job = test::richResults().jobs[0];
+  EXPECT_EQ(quantityValue(job, "relmse"), job.metric("relmse"));
+  EXPECT_EQ(quantityValue(job, "full:relmse"), 0.25);
+  EXPECT_EQ(quantityValue(job, "full:ssim"), 0.91);
+  EXPECT_EQ(quantityValue(job, "frame"), job.frameMedianMs());
+  EXPECT_EQ(quantityValue(job, "iteration"), 2.25);  // median of 1.5, 2, 2.5, 3
+  EXPECT_EQ(quantityValue(job, "iterations"), 4.0);
+  EXPECT_EQ(quantityValue(job, "statistic:vertices"), 1536.0);
+  EXPECT_EQ(quantityValue(job, "parameter:light_samples"), 16.0);
+  // A parameter that is not a number has no value but names a series.
+  EXPECT_EQ(quantityValue(job, "parameter:shadow"), std::nullopt);
+  EXPECT_EQ(quantityText(job, "parameter:shadow"), "pcf");
+  EXPECT_EQ(quantityText(job, "statistic:vertices"), "1536");
+  for (const char* absent : {"hdrflip_mean", "full:hdrflip_mean", "statistic:texels",
+                             "parameter:grid", "iteration/update", "shadow maps"})
+    EXPECT_EQ(quantityValue(job, absent), std::nullopt) << absent;
+}
+
+TEST(Quantity, ReferenceJobsHaveNoTimings) {
+  const JobResult reference = test::richResults().jobs[1];
+  EXPECT_EQ(quantityValue(reference, "frame"), std::nullopt);
+  EXPECT_EQ(quantityValue(reference, "iteration"), std::nullopt);
+  EXPECT_EQ(quantityValue(reference, "iterations"), std::nullopt);
+}
+
+TEST(Quantity, LabelsSayWhatTheAxisMeasures) {
+  EXPECT_EQ(quantityLabel("full:relmse"), "relmse against the full reference");
+  EXPECT_EQ(quantityLabel("iteration/update"), "ms per iteration (update)");
+  EXPECT_EQ(quantityLabel("frame"), "ms per frame");
+  EXPECT_EQ(quantityLabel("statistic:vertices"), "vertices");
+  EXPECT_EQ(quantityLabel("relmse"), "relmse");
+}
+
+TEST(Quantity, SyntaxErrorsNameTheProblem) {
+  for (const char* good : {"relmse", "full:relmse", "frame", "frame/shadow maps", "iteration",
+                           "iteration/selection", "statistic:vertices", "parameter:atlas"})
+    EXPECT_EQ(quantitySyntaxError(good), std::nullopt) << good;
+  EXPECT_EQ(quantitySyntaxError(""), "is empty");
+  EXPECT_EQ(quantitySyntaxError("parameter:"), "names no parameter after 'parameter:'");
+  EXPECT_EQ(quantitySyntaxError("iteration/"), "has an empty pass name");
+  EXPECT_EQ(quantitySyntaxError("param:atlas"),
+            "has an unknown prefix 'param:' (known: full:, statistic:, parameter:)");
+}
+
+}  // namespace
+}  // namespace gib::reports
