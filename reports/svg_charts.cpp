@@ -71,6 +71,19 @@ void drawSkippedNote(SvgWriter& svg, double x, double y, int skipped, std::strin
            R"(fill="#a33" font-style="italic")");
 }
 
+struct Bounds {
+  double x_low, x_high, y_low, y_high;
+};
+
+// The smallest box around the points; `empty` when there are none.
+Bounds pointBounds(const std::vector<std::pair<double, double>>& points, Bounds empty) {
+  if (points.empty()) return empty;
+  auto [xl, xh] = std::minmax_element(points.begin(), points.end());
+  auto [yl, yh] = std::minmax_element(points.begin(), points.end(),
+                                      [](auto& a, auto& b) { return a.second < b.second; });
+  return {xl->first, xh->first, yl->second, yh->second};
+}
+
 std::string fill(std::string_view color) {
   return fmt::format(R"(fill="{}")", color);
 }
@@ -152,17 +165,8 @@ std::string logLogChart(const LogLogPlot& plot) {
   const int skipped = int(plot.points.size() - drawn.size());
 
   // Value ranges of the points and of the fitted line's ends.
-  double x_low = 1, x_high = 10, y_low = 1, y_high = 10;
+  auto [x_low, x_high, y_low, y_high] = pointBounds(drawn, {1, 10, 1, 10});
   std::optional<std::array<double, 4>> line;  // x0, y0, x1, y1
-  if (!drawn.empty()) {
-    auto [xl, xh] = std::minmax_element(drawn.begin(), drawn.end());
-    x_low = xl->first;
-    x_high = xh->first;
-    auto [yl, yh] = std::minmax_element(drawn.begin(), drawn.end(),
-                                        [](auto& a, auto& b) { return a.second < b.second; });
-    y_low = yl->second;
-    y_high = yh->second;
-  }
   if (plot.fit && drawn.size() >= 2 && std::isfinite(plot.fit->slope) && x_low < x_high) {
     double cx = 0, cy = 0;
     for (const auto& [x, y] : drawn) {
@@ -242,17 +246,9 @@ std::string seriesChart(const SeriesPlot& plot) {
               [](const ChartPoint& a, const ChartPoint& b) { return a.x < b.x; });
   }
 
-  double x_low = plot.log_x ? 1 : 0, x_high = plot.log_x ? 10 : 1;
-  double y_low = x_low, y_high = x_high;
-  if (!all.empty()) {
-    auto [xl, xh] = std::minmax_element(all.begin(), all.end());
-    x_low = xl->first;
-    x_high = xh->first;
-    auto [yl, yh] = std::minmax_element(all.begin(), all.end(),
-                                        [](auto& a, auto& b) { return a.second < b.second; });
-    y_low = yl->second;
-    y_high = yh->second;
-  }
+  auto [x_low, x_high, y_low, y_high] =
+      pointBounds(all, {plot.log_x ? 1.0 : 0.0, plot.log_x ? 10.0 : 1.0, plot.log_y ? 1.0 : 0.0,
+                        plot.log_y ? 10.0 : 1.0});
   // Linear axes start at zero when the data are all positive, so bars of time read true.
   if (!plot.log_y && y_low > 0) y_low = 0;
   const Axis x_axis = plot.log_x ? logAxis(x_low, x_high) : linearAxis(x_low, x_high);
