@@ -4,6 +4,7 @@
 #include "realtime/gl/shader_library.h"
 
 #include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -49,6 +50,31 @@ void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
   std::optional<gl::PassProfiler::Scope> scope;
   if (profiler) scope.emplace(profiler->pass("g-buffer"));
 
+  clearAndSetState();
+  program_.use();
+  scene.bindSceneBuffers();
+  scene.draw();
+}
+
+void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>& views) {
+  if (!views_program_.id())
+    views_program_ = gl::buildProgram({{GL_VERTEX_SHADER, "gbuffer/gbuffer.vert.glsl"},
+                                       {GL_FRAGMENT_SHADER, "gbuffer/gbuffer.frag.glsl"}},
+                                      "#define EXPLICIT_VIEW 1\n");
+  clearAndSetState();
+  views_program_.use();
+  scene.bindSceneBuffers();
+  const GLint view_projection = views_program_.uniform("u_view_projection");
+  const GLint eye = views_program_.uniform("u_eye");
+  for (const GBufferView& view : views) {
+    glViewport(view.x, view.y, view.width, view.height);
+    glUniformMatrix4fv(view_projection, 1, GL_FALSE, glm::value_ptr(view.view_projection));
+    glUniform3fv(eye, 1, glm::value_ptr(view.eye));
+    scene.draw();
+  }
+}
+
+void GBuffer::clearAndSetState() const {
   framebuffer_.bind();
   glViewport(0, 0, width_, height_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -58,15 +84,11 @@ void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 1, kBackground);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 2, kNoAlbedo);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
-
   // Each pass sets the state it relies on. Both sides of a triangle reflect, so no culling.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  program_.use();
-  scene.bindSceneBuffers();
-  scene.draw();
 }
 
 void GBuffer::bindTextures(GLuint first) const {

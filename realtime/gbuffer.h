@@ -6,11 +6,25 @@
 #include "realtime/gpu_scene.h"
 #include "realtime/render_target.h"
 
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
 namespace gib::rt {
 
 namespace gl {
 class PassProfiler;
 }
+
+// A view other than the scene camera's, drawn into a rectangle of the G-buffer (the tiles of
+// the irradiance volume's cube maps). Positions' w is the distance from `eye`, and normals are
+// turned to face it (a probe's view has no emission to keep one-sided).
+struct GBufferView {
+  glm::mat4 view_projection{1.0f};
+  glm::vec3 eye{0.0f};
+  int x = 0, y = 0, width = 0, height = 0;  // viewport in texels
+};
 
 class GBuffer {
  public:
@@ -18,6 +32,8 @@ class GBuffer {
 
   // Rasterises the scene from its camera.
   void render(const GpuScene& scene, gl::PassProfiler* profiler = nullptr);
+  // Clears the whole buffer and rasterises each view into its rectangle.
+  void renderViews(const GpuScene& scene, const std::vector<GBufferView>& views);
 
   // RGBA32F textures; background pixels have distance (w of position) and material = −1.
   const gl::Texture& position() const { return position_; }  // world position, w: ray distance
@@ -32,8 +48,11 @@ class GBuffer {
  private:
   int width_, height_;
   gl::Texture position_, normal_, albedo_, depth_;
+  void clearAndSetState() const;
+
   gl::Framebuffer framebuffer_;
   gl::Program program_;
+  gl::Program views_program_;  // built on first use of renderViews
 };
 
 }  // namespace gib::rt

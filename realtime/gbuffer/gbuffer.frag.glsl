@@ -8,11 +8,24 @@ layout(location = 0) out vec4 out_position;  // world position, w: distance alon
 layout(location = 1) out vec4 out_normal;    // geometric normal, front side; w: material
 layout(location = 2) out vec4 out_albedo;    // diffuse reflectance, w: 1
 
+#ifdef EXPLICIT_VIEW
+uniform vec3 u_eye;
+#endif
+
 void main() {
+#ifdef EXPLICIT_VIEW
+  vec3 eye = u_eye;
+  // Turned towards the eye: a probe's view is shaded for the light it reflects, never for
+  // emission, and the shading pass knows no other eye than the camera's.
+  vec3 normal = dot(world_normal, eye - world_position) < 0.0 ? -world_normal : world_normal;
+#else
+  vec3 eye = camera.position.xyz;
+  // Not turned towards the camera: reflection is two-sided, but emission is not.
+  vec3 normal = world_normal;
+#endif
   // The perspective-correct interpolation of a planar triangle's positions is the point the
   // pixel's ray hits, so its distance from the eye is the path tracer's t.
-  out_position = vec4(world_position, length(world_position - camera.position.xyz));
-  // Not turned towards the camera: reflection is two-sided, but emission is not.
-  out_normal = vec4(world_normal, float(material));
+  out_position = vec4(world_position, length(world_position - eye));
+  out_normal = vec4(normal, float(material));
   out_albedo = vec4(materialDiffuse(material), 1.0);
 }

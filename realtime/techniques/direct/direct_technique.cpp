@@ -18,85 +18,19 @@ ShadowFilter parseFilter(const std::string& name) {
 
 }  // namespace
 
-DirectTechnique::DirectTechnique(const ParameterValues& p)
-    : light_samples_(p.integer("light_samples")) {
-  shadow_settings_.filter = parseFilter(p.text("shadow"));
-  shadow_settings_.size = p.integer("shadow_map_size");
-  shadow_settings_.pcf_radius = p.integer("pcf_radius");
-  shadow_settings_.normal_offset = float(p.number("normal_offset"));
-  shadow_settings_.blur_radius = p.integer("vsm_blur_radius");
-  shadow_settings_.min_variance = float(p.number("vsm_min_variance"));
+ShadowSettings shadowSettings(const ParameterValues& p) {
+  ShadowSettings settings;
+  settings.filter = parseFilter(p.text("shadow"));
+  settings.size = p.integer("shadow_map_size");
+  settings.pcf_radius = p.integer("pcf_radius");
+  settings.normal_offset = float(p.number("normal_offset"));
+  settings.blur_radius = p.integer("vsm_blur_radius");
+  settings.min_variance = float(p.number("vsm_min_variance"));
+  return settings;
 }
 
-void DirectTechnique::prepare(const GpuScene& scene, int width, int height) {
-  scene_ = &scene;
-  // Points on emitters sit a hair in front of them, beyond the cube maps' near plane.
-  const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
-  samples_ = makeLightSamples(scene.scene(), scene.emitters(), light_samples_, light_samples_,
-                              1e-3f * extent);
-  gbuffer_.emplace(width, height);
-  shadow_maps_.emplace(shadow_settings_, scene);
-  emission_ = gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
-                                {GL_FRAGMENT_SHADER, "techniques/direct/emission.frag.glsl"}});
-  auto shade = [&](LightSampleKind kind) {
-    return gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
-                             {GL_FRAGMENT_SHADER, "techniques/direct/shade_light.frag.glsl"}},
-                            shadow_maps_->defines(kind));
-  };
-  shade_point_ = shade(LightSampleKind::kPoint);
-  shade_directional_ = shade(LightSampleKind::kDirectional);
-  shadow_maps_->setLookupConstants(shade_point_);
-  shadow_maps_->setLookupConstants(shade_directional_);
-  glProgramUniform3fv(emission_.id(), emission_.uniform("u_sky_radiance"), 1,
-                      glm::value_ptr(scene.scene().sky_radiance));
-}
-
-void DirectTechnique::render(Frame& frame) {
-  const GpuScene& scene = *scene_;
-  gl::PassProfiler& profiler = frame.profiler;
-  gbuffer_->render(scene, &profiler);
-  scene.bindSceneBuffers();
-
-  auto drawFullScreen = [&] {
-    frame.target.bind();
-    empty_vertex_array_.bind();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  };
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  {
-    auto pass = profiler.pass("emission");
-    gbuffer_->bindTextures(0);
-    emission_.use();
-    drawFullScreen();
-  }
-  auto lights = profiler.pass("lights");
-  for (const LightSample& sample : samples_) {
-    shadow_maps_->render(scene, sample, profiler);
-    auto pass = profiler.pass("shading");
-    const gl::Program& program = shadeProgram(sample.kind);
-    program.use();
-    gbuffer_->bindTextures(0);
-    shadow_maps_->bindForLookup(program, sample);
-    glUniform3fv(program.uniform("u_light_intensity"), 1, glm::value_ptr(sample.intensity));
-    glUniform1f(program.uniform("u_cos_cone"), sample.cos_cone);
-    glUniform1f(program.uniform("u_exponent"), sample.exponent);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);  // each sample adds its share of the direct light
-    drawFullScreen();
-    glDisable(GL_BLEND);
-  }
-}
-
-TechniqueInfo directTechniqueInfo() {
-  TechniqueInfo info;
-  info.name = "direct";
-  info.description =
-      "direct illumination (LE + LDE) with shadow maps: hard, PCF or variance; area lights and "
-      "sky by light samples";
-  info.source = "Szirmay-Kalos et al., GPU-Based Techniques for Global Illumination Effects, Ch. 4";
-  info.parameters = {
+ParameterTable directLightingParameters() {
+  return {
       choiceParameter("shadow", "hard", {"hard", "pcf", "vsm"},
                       "shadow map filter: nearest comparison, percentage-closer filtering, or "
                       "variance shadow map"),
@@ -114,6 +48,32 @@ TechniqueInfo directTechniqueInfo() {
       numericParameter("vsm_min_variance", ParameterType::kNumber, "1e-6", 0, 1, "",
                        "variance floor of the Chebyshev bound, in units of the light range²"),
   };
+}
+
+DirectTechnique::DirectTechnique(const ParameterValues& p)
+    : lighting_(shadowSettings(p), p.integer("light_samples")) {}
+
+void DirectTechnique::prepare(const GpuScene& scene, int width, int height) {
+  scene_ = &scene;
+  gbuffer_.emplace(width, height);
+  lighting_.prepare(scene);
+}
+
+void DirectTechnique::render(Frame& frame) {
+  const GpuScene& scene = *scene_;
+  gbuffer_->render(scene, &frame.profiler);
+  lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
+  lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
+}
+
+TechniqueInfo directTechniqueInfo() {
+  TechniqueInfo info;
+  info.name = "direct";
+  info.description =
+      "direct illumination (LE + LDE) with shadow maps: hard, PCF or variance; area lights and "
+      "sky by light samples";
+  info.source = "Szirmay-Kalos et al., GPU-Based Techniques for Global Illumination Effects, Ch. 4";
+  info.parameters = directLightingParameters();
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<DirectTechnique>(values);
   };

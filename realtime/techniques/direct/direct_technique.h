@@ -7,8 +7,7 @@
 
 #include "realtime/gbuffer.h"
 #include "realtime/technique.h"
-#include "realtime/techniques/direct/light_samples.h"
-#include "realtime/techniques/direct/shadow_maps.h"
+#include "realtime/techniques/direct/direct_lighting.h"
 
 #include <memory>
 #include <optional>
@@ -23,22 +22,18 @@ class DirectTechnique final : public Technique {
   void render(Frame& frame) override;
   scene::PathClass pathClass() const override { return {0, 1}; }
 
-  std::size_t lightSampleCount() const { return samples_.size(); }
+  std::size_t lightSampleCount() const { return lighting_.sampleCount(); }
 
  private:
-  const gl::Program& shadeProgram(LightSampleKind kind) const {
-    return kind == LightSampleKind::kPoint ? shade_point_ : shade_directional_;
-  }
-
-  ShadowSettings shadow_settings_;
-  int light_samples_;
+  DirectLighting lighting_;
   const GpuScene* scene_ = nullptr;
-  std::vector<LightSample> samples_;
   std::optional<GBuffer> gbuffer_;
-  std::optional<ShadowMaps> shadow_maps_;
-  gl::Program emission_, shade_point_, shade_directional_;
-  gl::VertexArray empty_vertex_array_;  // core profile draws need one bound
 };
+
+// The shadow-map parameters of `direct` (filter, sizes, light samples), shared by the techniques
+// that add direct light the same way, and the settings they give.
+ParameterTable directLightingParameters();
+ShadowSettings shadowSettings(const ParameterValues& values);
 
 TechniqueInfo directTechniqueInfo();
 

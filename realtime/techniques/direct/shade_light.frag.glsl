@@ -9,6 +9,10 @@ layout(binding = 1) uniform sampler2D u_gbuffer_normal;    // xyz geometric norm
 uniform vec3 u_light_intensity;
 uniform float u_cos_cone;
 uniform float u_exponent;
+// Probe views (GBuffer::renderViews) store normals turned towards their own eye, which this pass
+// does not know: it then takes ωo along the normal, exact for Lambert surfaces and, for Phong,
+// the lobe's value at normal viewing (an approximation the irradiance volume accepts).
+uniform bool u_normals_face_viewer;
 layout(location = 0) out vec4 o_radiance;
 
 void main() {
@@ -18,9 +22,12 @@ void main() {
   vec4 normal_material = texelFetch(u_gbuffer_normal, pixel, 0);
   uint material = uint(normal_material.w);
   vec3 p = position.xyz;
-  vec3 wo = normalize(camera.position.xyz - p);
   vec3 n = normal_material.xyz;
-  if (dot(n, wo) < 0.0) n = -n;  // reflection is two-sided
+  vec3 wo = n;
+  if (!u_normals_face_viewer) {
+    wo = normalize(camera.position.xyz - p);
+    if (dot(n, wo) < 0.0) n = -n;  // reflection is two-sided
+  }
 
 #ifdef POINT_LIGHT
   vec3 to_light = u_light_position - p;

@@ -1,5 +1,7 @@
 #include "realtime/techniques/direct/shadow_maps.h"
 
+#include "realtime/cube_faces.h"
+
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
 
@@ -14,12 +16,6 @@ namespace gib::rt {
 
 namespace {
 
-// GL's cube-map face order (+x, −x, +y, −y, +z, −z) and the up vectors that make a face
-// rendered with lookAt read back correctly through a direction lookup.
-constexpr glm::vec3 kFaceAxis[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-constexpr glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
-                                  {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
 // Largest angle between a 90° face's axis and a direction it covers (to its corners).
 const float kFaceHalfDiagonal = std::acos(1.0f / std::sqrt(3.0f));
 // What a cleared map holds: nothing closer than the far plane (depth), or for a variance shadow
@@ -130,19 +126,17 @@ void ShadowMaps::clear(const gl::Framebuffer& framebuffer) const {
 
 void ShadowMaps::renderCube(const GpuScene& scene, const LightSample& sample) {
   const float cone = std::acos(std::clamp(sample.cos_cone, -1.0f, 1.0f));
-  const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, near_, far_);
   depth_point_.use();
   glUniform3fv(depth_point_.uniform("u_light_position"), 1, glm::value_ptr(sample.position));
   glUniform1f(depth_point_.uniform("u_far"), far_);
   for (int face = 0; face < 6; ++face) {
     const gl::Framebuffer& fb = cube_faces_[std::size_t(face)];
     clear(fb);
-    const glm::vec3 axis = kFaceAxis[face];
+    const glm::vec3 axis = kCubeFaceAxis[face];
     const float angle = std::acos(std::clamp(glm::dot(axis, sample.axis), -1.0f, 1.0f));
     if (angle >= cone + kFaceHalfDiagonal) continue;  // the sample sends no light this way
     fb.bind();
-    const glm::mat4 view_projection =
-        projection * glm::lookAt(sample.position, sample.position + axis, kFaceUp[face]);
+    const glm::mat4 view_projection = cubeFaceViewProjection(sample.position, face, near_, far_);
     glUniformMatrix4fv(depth_point_.uniform("u_face_view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view_projection));
     scene.draw();
