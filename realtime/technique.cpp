@@ -3,13 +3,15 @@
 #include "common/input_error.h"
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
+#include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
 
 #include <fmt/format.h>
 
 namespace gib::rt {
 
 const std::vector<TechniqueInfo>& techniqueCatalogue() {
-  static const std::vector<TechniqueInfo> catalogue = {directTechniqueInfo()};
+  static const std::vector<TechniqueInfo> catalogue = {directTechniqueInfo(),
+                                                       irradianceVolumeTechniqueInfo()};
   return catalogue;
 }
 
@@ -17,11 +19,10 @@ const TechniqueInfo& findTechnique(std::string_view name) {
   for (const TechniqueInfo& info : techniqueCatalogue())
     if (info.name == name) return info;
   const std::string names =
-      "reference, " + joinNames(techniqueCatalogue(), ", ", [](const TechniqueInfo& info) {
-        return info.name;
-      });
-  throw InputError(fmt::format("unknown technique '{}'; available: {} (see `gibench list techniques`)",
-                               name, names));
+      "reference, " +
+      joinNames(techniqueCatalogue(), ", ", [](const TechniqueInfo& info) { return info.name; });
+  throw InputError(fmt::format(
+      "unknown technique '{}'; available: {} (see `gibench list techniques`)", name, names));
 }
 
 }  // namespace gib::rt

@@ -71,6 +71,7 @@ std::optional<double> quantityValue(const JobResult& job, const std::string& qua
 
 std::optional<std::string> quantityText(const JobResult& job, const std::string& quantity) {
   const std::string_view q = quantity;
+  if (q == "scene") return job.scene;
   if (startsWith(q, kParameter)) return parameterText(job, q.substr(kParameter.size()));
   const std::optional<double> value = quantityValue(job, quantity);
   if (!value) return std::nullopt;

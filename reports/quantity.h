@@ -8,6 +8,7 @@
 //   iterations                   the number of iterations run
 //   statistic:<name>             a count the technique reports (vertices, atlas_texels, …)
 //   parameter:<name>             a technique parameter (numeric for an axis, any for a series)
+//   scene                        the job's scene (a series only: it has no number)
 #pragma once
 
 #include "reports/results.h"

@@ -21,6 +21,8 @@ TEST(Quantity, NamesEveryKindOfNumberOfAJob) {
   EXPECT_EQ(quantityValue(job, "parameter:shadow"), std::nullopt);
   EXPECT_EQ(quantityText(job, "parameter:shadow"), "pcf");
   EXPECT_EQ(quantityText(job, "statistic:vertices"), "1536");
+  EXPECT_EQ(quantityText(job, "scene"), "cornell");
+  EXPECT_EQ(quantityValue(job, "scene"), std::nullopt);
   for (const char* absent : {"hdrflip_mean", "full:hdrflip_mean", "statistic:texels",
                              "parameter:grid", "iteration/update", "shadow maps"})
     EXPECT_EQ(quantityValue(job, absent), std::nullopt) << absent;

@@ -1,0 +1,215 @@
+#include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
+
+#include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/shader_library.h"
+#include "realtime/render_target.h"
+#include "realtime/sh/spherical_harmonics.h"
+#include "realtime/techniques/direct/direct_technique.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <functional>
+
+namespace gib::rt {
+
+namespace {
+
+// Cube-map texels per buffer at most: 8³ probes with 32² faces, or 16³ with 16².
+constexpr long long kMaxAtlasTexels = 1 << 25;
+
+void setGridUniforms(const gl::Program& program, const ProbeGrid& grid, int count,
+                     bool indirect_shadows) {
+  const GLuint id = program.id();
+  glProgramUniform1i(id, program.uniform("u_grid_n"), grid.n);
+  glProgramUniform3fv(id, program.uniform("u_grid_origin"), 1, glm::value_ptr(grid.origin));
+  glProgramUniform3fv(id, program.uniform("u_grid_cell"), 1, glm::value_ptr(grid.cell));
+  glProgramUniform1i(id, program.uniform("u_coefficient_count"), count);
+  const std::array<float, sh::kMaxBand + 1> lambert = sh::lambertBandFactors();
+  glProgramUniform4fv(id, program.uniform("u_lambert_factors"), 1, lambert.data());
+  glProgramUniform1i(id, program.uniform("u_indirect_shadows"), indirect_shadows ? 1 : 0);
+  glProgramUniform1i(id, program.uniform("u_face"), grid.face);
+  glProgramUniform1i(id, program.uniform("u_tiles_x"), grid.tiles_x);
+}
+
+}  // namespace
+
+IrradianceVolumeTechnique::IrradianceVolumeTechnique(const ParameterValues& p)
+    : bounces_(p.integer("bounces")),
+      grid_n_(p.integer("grid")),
+      face_(p.integer("face")),
+      band_(p.integer("sh_order")),
+      indirect_shadows_(p.text("indirect_shadows") == "on"),
+      rasterise_every_frame_(p.text("motion") == "objects"),
+      lighting_(shadowSettings(p), p.integer("light_samples")) {}
+
+void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int height) {
+  scene_ = &scene;
+  grid_ = makeProbeGrid(scene.boundsMin(), scene.boundsMax(), grid_n_, face_, kMaxAtlasTexels);
+  const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
+  near_ = 1e-4f * extent;
+  far_ = 2.0f * extent;
+  camera_gbuffer_.emplace(width, height);
+  probe_gbuffer_.emplace(grid_.atlasWidth(), grid_.atlasHeight());
+  probe_direct_.emplace(grid_.atlasWidth(), grid_.atlasHeight());
+  probe_lit_.emplace(grid_.atlasWidth(), grid_.atlasHeight());
+  lighting_.prepare(scene);
+
+  const int count = sh::coefficientCount(band_);
+  coefficients_ = gl::Buffer(std::size_t(grid_.probeCount()) * sh::kMaxCoefficients * 16, nullptr);
+  weights_ = gl::Buffer::fromVector(sh::cubeProjectionWeights(face_, band_));
+  std::vector<float> phong;  // per material, bands 0..3
+  for (const scene::Material& m : scene.scene().materials) {
+    const auto factors = m.type == scene::MaterialType::kPhong
+                             ? sh::phongBandFactors(m.exponent)
+                             : std::array<float, sh::kMaxBand + 1>{};
+    phong.insert(phong.end(), factors.begin(), factors.end());
+  }
+  if (phong.empty()) phong.assign(4, 0.0f);
+  phong_factors_ = gl::Buffer::fromVector(phong);
+
+  project_ = gl::buildProgram(
+      {{GL_COMPUTE_SHADER, "techniques/irradiance_volume/sh_projection.comp.glsl"}});
+  glProgramUniform1i(project_.id(), project_.uniform("u_face"), grid_.face);
+  glProgramUniform1i(project_.id(), project_.uniform("u_tiles_x"), grid_.tiles_x);
+  glProgramUniform1i(project_.id(), project_.uniform("u_coefficient_count"), count);
+  indirect_ =
+      gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
+                        {GL_FRAGMENT_SHADER, "techniques/irradiance_volume/indirect.frag.glsl"}});
+  setGridUniforms(indirect_, grid_, count, indirect_shadows_);
+  rasterised_ = false;
+}
+
+void IrradianceVolumeTechnique::rasteriseProbes() {
+  probe_gbuffer_->renderViews(*scene_, grid_.views(near_, far_));
+  rasterised_ = true;
+}
+
+void IrradianceVolumeTechnique::project(const RenderTarget& lit) {
+  project_.use();
+  lit.color().bind(0);
+  coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  weights_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  glDispatchCompute(GLuint(grid_.probeCount()), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void IrradianceVolumeTechnique::addIndirect(const GBuffer& gbuffer, const RenderTarget& target,
+                                            bool probe_view) {
+  scene_->bindSceneBuffers();
+  indirect_.use();
+  glUniform1i(indirect_.uniform("u_normals_face_viewer"), probe_view ? 1 : 0);
+  gbuffer.bindTextures(0);
+  probe_gbuffer_->position().bind(4);
+  coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  phong_factors_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  target.bind();
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  empty_vertex_array_.bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+}
+
+void IrradianceVolumeTechnique::bounce(gl::PassProfiler& profiler,
+                                       const std::function<void(int)>& after_bounce) {
+  const RenderTarget* lit = &*probe_direct_;
+  for (int b = 1; b <= bounces_; ++b) {
+    {
+      auto pass = profiler.pass("sh projection");
+      project(*lit);
+    }
+    if (after_bounce) after_bounce(b);
+    if (b == bounces_) break;
+    // The next bounce sees direct light plus this bounce's indirect light at the probes' surfaces.
+    auto pass = profiler.pass("relight cube maps");
+    glCopyImageSubData(probe_direct_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       probe_lit_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, grid_.atlasWidth(),
+                       grid_.atlasHeight(), 1);
+    addIndirect(*probe_gbuffer_, *probe_lit_, true);
+    lit = &*probe_lit_;
+  }
+}
+
+void IrradianceVolumeTechnique::render(Frame& frame) {
+  gl::PassProfiler& profiler = frame.profiler;
+  if (rasterise_every_frame_ || !rasterised_) {
+    auto pass = profiler.pass("rasterise cube maps");
+    rasteriseProbes();
+  }
+  camera_gbuffer_->render(*scene_, &profiler);
+  lighting_.writeEmission(*scene_, *camera_gbuffer_, frame.target, profiler);
+  probe_direct_->clear(0, 0, 0);
+  std::vector<LitView> views = {{&*camera_gbuffer_, &frame.target, "shading", false}};
+  if (bounces_ > 0) views.push_back({&*probe_gbuffer_, &*probe_direct_, "relight cube maps", true});
+  lighting_.addDirect(*scene_, views, profiler);
+  bounce(profiler);
+  if (bounces_ > 0) {
+    auto pass = profiler.pass("indirect");
+    addIndirect(*camera_gbuffer_, frame.target, false);
+  }
+}
+
+std::vector<AuxiliaryImage> IrradianceVolumeTechnique::auxiliaryImages() {
+  if (bounces_ == 0) return {};
+  // Fig. 2 (d, e): the indirect light after each bounce, and what each bounce adds.
+  RenderTarget scratch(camera_gbuffer_->width(), camera_gbuffer_->height());
+  gl::PassProfiler untimed;
+  std::vector<AuxiliaryImage> images;
+  image::Image previous;
+  bounce(untimed, [&](int b) {
+    scratch.clear(0, 0, 0);
+    addIndirect(*camera_gbuffer_, scratch, false);
+    image::Image total = scratch.read();
+    image::Image added = total;
+    if (b > 1)
+      for (std::size_t i = 0; i < added.data().size(); ++i) added.data()[i] -= previous.data()[i];
+    images.push_back({fmt::format("indirect-{}", b),
+                      fmt::format("the light bounce {} adds (camera view)", b), added});
+    previous = std::move(total);
+  });
+  images.push_back(
+      {"indirect", fmt::format("all indirect light after {} bounces", bounces_), previous});
+  return images;
+}
+
+std::vector<TechniqueStatistic> IrradianceVolumeTechnique::statistics() const {
+  return {{"grid_points", double(grid_.probeCount())},
+          {"cube_texels", double(grid_.tileCount()) * grid_.face * grid_.face},
+          {"sh_coefficients", double(sh::coefficientCount(band_))},
+          {"vertices", scene_ ? double(scene_->vertexCount()) : 0.0}};
+}
+
+TechniqueInfo irradianceVolumeTechniqueInfo() {
+  TechniqueInfo info;
+  info.name = "irradiance_volume";
+  info.description =
+      "irradiance volume: cube maps at grid points projected to spherical harmonics, k bounces "
+      "of indirect light over shadow-mapped direct light";
+  info.source = "Nijasure, Pattanaik & Goel, Real-Time Global Illumination on GPU (2005)";
+  info.parameters = {
+      numericParameter("bounces", ParameterType::kInteger, "2", 0, 8, "",
+                       "iterations of indirect light (the paper's 2); 0 is direct light alone"),
+      numericParameter("grid", ParameterType::kInteger, "4", 2, 16, "probes per axis",
+                       "uniform grid of n×n×n probes over the scene bounds (the paper's 4)"),
+      numericParameter("face", ParameterType::kInteger, "16", 4, 64, "texels",
+                       "cube-map face size at each probe (the paper's 16)"),
+      numericParameter("sh_order", ParameterType::kInteger, "2", 1, 3, "band",
+                       "highest spherical-harmonic band: 2 gives the paper's 9 coefficients, 3 "
+                       "gives 16"),
+      choiceParameter("indirect_shadows", "off", {"off", "on"},
+                      "§6: weight the eight probes by whether their cube maps see the point"),
+      choiceParameter("motion", "objects", {"objects", "light"},
+                      "what may change between frames: objects (rasterise the cube maps every "
+                      "frame, the paper's dynamic scene) or only the light (rasterise once)"),
+  };
+  for (ParameterSpec spec : directLightingParameters()) info.parameters.push_back(std::move(spec));
+  info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
+    return std::make_unique<IrradianceVolumeTechnique>(values);
+  };
+  return info;
+}
+
+}  // namespace gib::rt

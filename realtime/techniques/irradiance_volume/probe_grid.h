@@ -1,0 +1,40 @@
+// The irradiance volume's probes (Nijasure et al. 2005, §4.1): a uniform n×n×n grid over the
+// scene's bounds, a probe at the centre of each cell, and their cube maps laid out as tiles of
+// one 2D G-buffer ("atlas"), six tiles per probe, so that one deferred pass lights all of them.
+#pragma once
+
+#include "realtime/gbuffer.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace gib::rt {
+
+struct ProbeGrid {
+  int n = 4;               // probes per axis
+  int face = 16;           // cube face size in texels
+  glm::vec3 origin{0.0f};  // the grid's corner (the scene bounds' minimum)
+  glm::vec3 cell{1.0f};    // cell size; probe (x, y, z) sits at origin + (x+½, y+½, z+½)·cell
+  int tiles_x = 1;         // tiles per row of the atlas
+
+  int probeCount() const { return n * n * n; }
+  int tileCount() const { return 6 * probeCount(); }
+  int atlasWidth() const { return tiles_x * face; }
+  int atlasHeight() const { return ((tileCount() + tiles_x - 1) / tiles_x) * face; }
+  // Probe index (z·n + y)·n + x.
+  glm::vec3 probePosition(int index) const;
+  // The tile of a probe's face: its lower-left texel in the atlas.
+  int tileX(int probe, int face_index) const { return ((probe * 6 + face_index) % tiles_x) * face; }
+  int tileY(int probe, int face_index) const { return ((probe * 6 + face_index) / tiles_x) * face; }
+
+  // The view of every tile, for GBuffer::renderViews.
+  std::vector<GBufferView> views(float near_plane, float far_plane) const;
+};
+
+// Throws gib::InputError when the atlas would exceed `max_texels` (a grid of 16³ probes with
+// 64² faces would need 100 M texels per buffer).
+ProbeGrid makeProbeGrid(const glm::vec3& bounds_min, const glm::vec3& bounds_max, int n, int face,
+                        long long max_texels);
+
+}  // namespace gib::rt
