@@ -141,14 +141,16 @@ std::array<float, kMaxBand + 1> lambertBandFactors() {
   return {1.0f, 2.0f / 3.0f, 0.25f, 0.0f};
 }
 
-std::array<float, kMaxBand + 1> phongBandFactors(double exponent) {
-  if (!(exponent >= 0)) throw std::invalid_argument("Phong exponent must be 0 or more");
-  const auto lobe = [exponent](double c) {
-    return (exponent + 1) / (2 * kPi) * std::pow(c, exponent);
-  };
+std::array<float, kMaxBand + 1> zonalBandFactors(const std::function<double(double)>& lobe) {
   std::array<float, kMaxBand + 1> factors{};
   for (int l = 0; l <= kMaxBand; ++l) factors[std::size_t(l)] = float(zonalFactor(l, lobe));
   return factors;
+}
+
+std::array<float, kMaxBand + 1> phongBandFactors(double exponent) {
+  if (!(exponent >= 0)) throw std::invalid_argument("Phong exponent must be 0 or more");
+  return zonalBandFactors(
+      [exponent](double c) { return (exponent + 1) / (2 * kPi) * std::pow(c, exponent); });
 }
 
 }  // namespace gib::rt::sh

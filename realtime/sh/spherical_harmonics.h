@@ -46,6 +46,9 @@ std::vector<double> projectOnCube(const std::function<glm::dvec3(const glm::vec3
 // factors are Â_l/π: 1, 2/3, 1/4, 0; for a normalised Phong lobe (n+1)/(2π)·cosⁿ around the mirror
 // direction of unit reflectance (eq. 5), computed by quadrature (exact to float precision).
 std::array<float, kMaxBand + 1> lambertBandFactors();
+// Eq. 4's factors 2π ∫₀¹ lobe(cosθ) P_l(cosθ) d(cosθ) of any lobe around its axis (zero below the
+// horizon), by quadrature.
+std::array<float, kMaxBand + 1> zonalBandFactors(const std::function<double(double)>& lobe);
 std::array<float, kMaxBand + 1> phongBandFactors(double exponent);
 
 }  // namespace gib::rt::sh

@@ -1,0 +1,203 @@
+// `irradiance_volume` on the GPU: probe views look where the SH tables assume, the GLSL basis
+// and trilinear interpolation agree with the CPU and are exact at the probes, zero bounces is
+// `direct`, and more bounces bring the Cornell box closer to full global illumination.
+#include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
+
+#include "common/input_error.h"
+#include "metrics/image_metrics.h"
+#include "realtime/gl/shader_library.h"
+#include "realtime/gpu_scene.h"
+#include "realtime/sh/spherical_harmonics.h"
+#include "realtime/technique_runner.h"
+#include "reference/progressive_renderer.h"
+#include "scene/builtin_scenes.h"
+#include "support/gl_test_context.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+namespace gib::rt {
+namespace {
+
+class IrradianceVolumeGl : public test::GlTest {};
+
+TEST_F(IrradianceVolumeGl, ProbeViewsLookAlongTheCubeTexelDirections) {
+  const scene::Scene scene = scene::loadScene("cornell");
+  const GpuScene gpu_scene(scene, 32, 32);
+  const ProbeGrid grid = makeProbeGrid(gpu_scene.boundsMin(), gpu_scene.boundsMax(), 2, 8, 1 << 20);
+  GBuffer gbuffer(grid.atlasWidth(), grid.atlasHeight());
+  gbuffer.renderViews(gpu_scene, grid.views(0.1f, 1e4f));
+  const image::Image position = gl::readTexture(gbuffer.position(), 4);
+  int hits = 0, checked = 0;
+  for (int probe = 0; probe < grid.probeCount(); ++probe)
+    for (int face = 0; face < 6; ++face)
+      for (int j = 0; j < grid.face; ++j)
+        for (int i = 0; i < grid.face; ++i) {
+          ++checked;
+          // readTexture puts the bottom row (j = 0 of a tile) last.
+          const float* p = position.pixel(grid.tileX(probe, face) + i,
+                                          grid.atlasHeight() - 1 - (grid.tileY(probe, face) + j));
+          if (p[3] <= 0) continue;
+          ++hits;
+          const glm::vec3 seen =
+              glm::normalize(glm::vec3(p[0], p[1], p[2]) - grid.probePosition(probe));
+          EXPECT_GT(glm::dot(seen, sh::cubeTexelDirection(face, i, j, grid.face)), 0.999f)
+              << "probe " << probe << " face " << face << " texel " << i << "," << j;
+        }
+  // The Cornell box is closed but for its open front: most texels see a surface.
+  EXPECT_GT(hits, checked * 3 / 4);
+}
+
+// A compute shader around irradiance_volume.glsl: the GLSL basis at given directions, and the
+// interpolated coefficients at given points.
+constexpr const char* kProbeShader = R"(
+#include "scene/scene.glsl"
+#include "techniques/irradiance_volume/irradiance_volume.glsl"
+layout(local_size_x = 1) in;
+layout(std430, binding = 6) buffer Queries { vec4 queries[]; };
+layout(std430, binding = 7) buffer Results { vec4 results[]; };
+uniform int u_basis;
+void main() {
+  int q = int(gl_WorkGroupID.x);
+  if (u_basis == 1) {
+    float y[SH_MAX_COEFFICIENTS];
+    shBasis(normalize(queries[q].xyz), y);
+    for (int i = 0; i < SH_MAX_COEFFICIENTS; ++i) results[q * SH_MAX_COEFFICIENTS + i] = vec4(y[i]);
+  } else {
+    vec3 L[SH_MAX_COEFFICIENTS];
+    interpolateCoefficients(queries[q].xyz, L);
+    for (int i = 0; i < SH_MAX_COEFFICIENTS; ++i) results[q * SH_MAX_COEFFICIENTS + i] = vec4(L[i], 0.0);
+  }
+}
+)";
+
+std::vector<glm::vec4> runProbeShader(const gl::Program& program,
+                                      const std::vector<glm::vec4>& queries, bool basis) {
+  const gl::Buffer query_buffer = gl::Buffer::fromVector(queries);
+  std::vector<glm::vec4> results(queries.size() * sh::kMaxCoefficients);
+  const gl::Buffer result_buffer = gl::Buffer::fromVector(results);
+  query_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  result_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  program.use();
+  glUniform1i(program.uniform("u_basis"), basis ? 1 : 0);
+  glDispatchCompute(GLuint(queries.size()), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(result_buffer.id(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)),
+                          results.data());
+  return results;
+}
+
+TEST_F(IrradianceVolumeGl, GlslBasisAndInterpolationAgreeWithTheCpuAndAreExactAtProbes) {
+  const gl::Program program = gl::buildProgram(
+      {{GL_COMPUTE_SHADER, "test/probe.comp.glsl"}}, "",
+      [](std::string_view path) -> std::string_view {
+        return path == "test/probe.comp.glsl" ? std::string_view(kProbeShader) : gl::glslFile(path);
+      });
+  // The basis.
+  const std::vector<glm::vec4> directions = {{0, 0, 1, 0}, {1, 2, -3, 0}, {-0.3f, 0.9f, 0.1f, 0}};
+  const std::vector<glm::vec4> basis = runProbeShader(program, directions, true);
+  for (std::size_t q = 0; q < directions.size(); ++q) {
+    const auto expected = sh::evaluateBasis(glm::normalize(glm::vec3(directions[q])));
+    for (int i = 0; i < sh::kMaxCoefficients; ++i)
+      EXPECT_NEAR(basis[q * sh::kMaxCoefficients + std::size_t(i)].x, expected[std::size_t(i)],
+                  1e-5)
+          << q << " " << i;
+  }
+  // Interpolation: each probe's coefficients are distinct; at a probe they come back exactly,
+  // halfway between two probes they are the mean.
+  const ProbeGrid grid = makeProbeGrid({0, 0, 0}, {3, 3, 3}, 3, 4, 1 << 20);
+  std::vector<glm::vec4> coefficients(std::size_t(grid.probeCount()) * sh::kMaxCoefficients);
+  for (std::size_t i = 0; i < coefficients.size(); ++i)
+    coefficients[i] = glm::vec4(float(i), float(i % 7), -float(i % 5), 0);
+  const gl::Buffer buffer = gl::Buffer::fromVector(coefficients);
+  buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  const gl::Buffer phong = gl::Buffer::fromVector(std::vector<float>(4, 0.0f));
+  phong.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  const GLuint id = program.id();
+  glProgramUniform1i(id, program.uniform("u_grid_n"), grid.n);
+  glProgramUniform3fv(id, program.uniform("u_grid_origin"), 1, glm::value_ptr(grid.origin));
+  glProgramUniform3fv(id, program.uniform("u_grid_cell"), 1, glm::value_ptr(grid.cell));
+  glProgramUniform1i(id, program.uniform("u_coefficient_count"), 9);
+  glProgramUniform1i(id, program.uniform("u_indirect_shadows"), 0);
+  std::vector<glm::vec4> points;
+  for (int probe = 0; probe < grid.probeCount(); ++probe)
+    points.push_back(glm::vec4(grid.probePosition(probe), 0));
+  points.push_back(glm::vec4(0.5f * (grid.probePosition(0) + grid.probePosition(1)), 0));
+  const std::vector<glm::vec4> interpolated = runProbeShader(program, points, false);
+  for (int probe = 0; probe < grid.probeCount(); ++probe)
+    for (int i = 0; i < 9; ++i) {
+      const glm::vec4 got = interpolated[std::size_t(probe * sh::kMaxCoefficients + i)];
+      const glm::vec4 want = coefficients[std::size_t(probe * sh::kMaxCoefficients + i)];
+      EXPECT_NEAR(got.x, want.x, 1e-3f * (1 + std::abs(want.x))) << probe << " " << i;
+      EXPECT_NEAR(got.y, want.y, 1e-4f) << probe << " " << i;
+    }
+  const std::size_t mid = std::size_t(grid.probeCount()) * sh::kMaxCoefficients;
+  EXPECT_NEAR(interpolated[mid].x, 0.5f * (coefficients[0].x + coefficients[16].x), 1e-3f);
+}
+
+TechniqueRunSettings smallRun() {
+  TechniqueRunSettings settings;
+  settings.width = 48;
+  settings.height = 48;
+  settings.warmup_frames = 0;
+  settings.frames = 1;
+  settings.context.debug = true;  // any GL error fails the run
+  return settings;
+}
+
+image::Image render(const scene::Scene& scene, const std::string& technique,
+                    const std::vector<std::string>& set, scene::PathClass* path_class = nullptr) {
+  const TechniqueInfo& info = findTechnique(technique);
+  const TechniqueRunResult result =
+      runTechnique(scene, info, parseParameters(info.parameters, set, technique), smallRun());
+  if (path_class) *path_class = result.path_class;
+  return result.image;
+}
+
+TEST(IrradianceVolume, ZeroBouncesIsTheDirectTechnique) {
+  const scene::Scene scene = scene::loadScene("cornell");
+  scene::PathClass path_class;
+  const image::Image volume =
+      render(scene, "irradiance_volume", {"bounces=0", "light_samples=4"}, &path_class);
+  const image::Image direct = render(scene, "direct", {"light_samples=4"});
+  EXPECT_EQ(path_class, (scene::PathClass{0, 1}));
+  ASSERT_EQ(volume.data().size(), direct.data().size());
+  for (std::size_t i = 0; i < volume.data().size(); ++i)
+    ASSERT_NEAR(volume.data()[i], direct.data()[i], 1e-6f) << i;
+}
+
+TEST(IrradianceVolume, MoreBouncesComeCloserToFullGlobalIllumination) {
+  // relMSE against the full reference (512 spp, whose own noise is far below the differences
+  // measured here: 0.07, 0.02 and 0.01 at 128² on this scene) falls with every bounce.
+  const scene::Scene scene = scene::loadScene("cornell");
+  ref::RenderSettings settings;
+  settings.width = settings.height = 48;
+  settings.spp = 512;
+  const image::Image reference = ref::renderReference(scene, settings).mean;
+  double previous = 1e9;
+  for (int bounces : {0, 1, 2}) {
+    scene::PathClass path_class;
+    const image::Image image =
+        render(scene, "irradiance_volume",
+               {"bounces=" + std::to_string(bounces), "light_samples=8"}, &path_class);
+    EXPECT_EQ(path_class, (scene::PathClass{0, bounces + 1}));
+    const double error = metrics::computeRelMse(reference, image, metrics::kRelativeEpsilon).value;
+    EXPECT_LT(error, previous) << bounces << " bounces";
+    previous = error;
+  }
+}
+
+TEST(IrradianceVolume, AnAtlasTooLargeIsRefusedWithTheFix) {
+  try {
+    makeProbeGrid({0, 0, 0}, {1, 1, 1}, 16, 64, 1 << 25);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lower grid or face"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace gib::rt
