@@ -5,8 +5,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <string_view>
+#include <vector>
 
 namespace gib::reports {
 
@@ -46,9 +48,39 @@ bool isIterationTiming(std::string_view quantity) {
           quantity[kIteration.size()] == '/');
 }
 
+// "a + b + c": the terms, trimmed.
+std::vector<std::string> sumTerms(std::string_view quantity) {
+  std::vector<std::string> terms;
+  std::size_t start = 0;
+  while (start <= quantity.size()) {
+    const std::size_t end = std::min(quantity.find('+', start), quantity.size());
+    std::string_view term = quantity.substr(start, end - start);
+    while (!term.empty() && term.front() == ' ') term.remove_prefix(1);
+    while (!term.empty() && term.back() == ' ') term.remove_suffix(1);
+    terms.emplace_back(term);
+    start = end + 1;
+  }
+  return terms;
+}
+
+std::optional<double> singleQuantityValue(const JobResult& job, const std::string& quantity);
+
 }  // namespace
 
 std::optional<double> quantityValue(const JobResult& job, const std::string& quantity) {
+  if (quantity.find('+') == std::string::npos) return singleQuantityValue(job, quantity);
+  double sum = 0;
+  for (const std::string& term : sumTerms(quantity)) {
+    const std::optional<double> value = singleQuantityValue(job, term);
+    if (!value) return std::nullopt;
+    sum += *value;
+  }
+  return sum;
+}
+
+namespace {
+
+std::optional<double> singleQuantityValue(const JobResult& job, const std::string& quantity) {
   const std::string_view q = quantity;
   if (startsWith(q, kFull)) return findValue(job.metrics_full, q.substr(kFull.size()));
   if (startsWith(q, kStatistic)) return findValue(job.statistics, q.substr(kStatistic.size()));
@@ -68,6 +100,8 @@ std::optional<double> quantityValue(const JobResult& job, const std::string& qua
   const std::optional<TimingsView> view = readTimings(job.timings);
   return view ? passMedianMs(*view, quantity) : std::nullopt;
 }
+
+}  // namespace
 
 std::optional<std::string> quantityText(const JobResult& job, const std::string& quantity) {
   const std::string_view q = quantity;
@@ -93,6 +127,12 @@ std::string quantityLabel(const std::string& quantity) {
 }
 
 std::optional<std::string> quantitySyntaxError(const std::string& quantity) {
+  if (quantity.find('+') != std::string::npos) {
+    for (const std::string& term : sumTerms(quantity))
+      if (std::optional<std::string> error = quantitySyntaxError(term))
+        return fmt::format("has a term that {}", *error);
+    return std::nullopt;
+  }
   const std::string_view q = quantity;
   if (q.empty()) return "is empty";
   for (std::string_view prefix : {kFull, kStatistic, kParameter})

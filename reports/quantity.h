@@ -9,6 +9,7 @@
 //   statistic:<name>             a count the technique reports (vertices, atlas_texels, …)
 //   parameter:<name>             a technique parameter (numeric for an axis, any for a series)
 //   scene                        the job's scene (a series only: it has no number)
+//   a + b + …                    the sum of several (a paper's row that spans passes)
 #pragma once
 
 #include "reports/results.h"

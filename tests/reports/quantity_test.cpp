@@ -22,6 +22,10 @@ TEST(Quantity, NamesEveryKindOfNumberOfAJob) {
   EXPECT_EQ(quantityText(job, "parameter:shadow"), "pcf");
   EXPECT_EQ(quantityText(job, "statistic:vertices"), "1536");
   EXPECT_EQ(quantityText(job, "scene"), "cornell");
+  // Sums: a paper's row that spans several of our passes.
+  EXPECT_EQ(quantityValue(job, "frame + iteration"), *job.frameMedianMs() + 2.25);
+  EXPECT_EQ(quantityValue(job, "iteration+statistic:vertices"), 2.25 + 1536);
+  EXPECT_EQ(quantityValue(job, "frame + shadow maps"), std::nullopt);
   EXPECT_EQ(quantityValue(job, "scene"), std::nullopt);
   for (const char* absent : {"hdrflip_mean", "full:hdrflip_mean", "statistic:texels",
                              "parameter:grid", "iteration/update", "shadow maps"})
@@ -50,6 +54,8 @@ TEST(Quantity, SyntaxErrorsNameTheProblem) {
   EXPECT_EQ(quantitySyntaxError(""), "is empty");
   EXPECT_EQ(quantitySyntaxError("parameter:"), "names no parameter after 'parameter:'");
   EXPECT_EQ(quantitySyntaxError("iteration/"), "has an empty pass name");
+  EXPECT_EQ(quantitySyntaxError("frame + iteration/update"), std::nullopt);
+  EXPECT_EQ(quantitySyntaxError("frame + "), "has a term that is empty");
   EXPECT_EQ(quantitySyntaxError("param:atlas"),
             "has an unknown prefix 'param:' (known: full:, statistic:, parameter:)");
 }

@@ -617,6 +617,21 @@ TEST(RepositorySuites, SmokeSuiteParses) {
                                "cornell-direct/shadow=pcf", "cornell-direct/shadow=vsm"));
 }
 
+TEST(RepositorySuites, EveryFigureSuiteParsesAndShowsThePapersNumbersOrCharts) {
+  int count = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(GIB_SOURCE_DIR) / "suites" /
+                                           "figures")) {
+    if (entry.path().extension() != ".toml") continue;
+    ++count;
+    const Suite suite = loadSuiteFile(entry.path());
+    EXPECT_FALSE(expandSuite(suite).empty()) << entry.path();
+    EXPECT_FALSE(suite.paper.empty() && suite.charts.empty())
+        << entry.path() << " reproduces a figure: give it [[paper]] values or a [[chart]]";
+  }
+  EXPECT_GE(count, 1);
+}
+
 TEST(RepositorySuites, NightlySuiteCoversEverySceneAndTechnique) {
   const Suite suite = loadSuiteFile(repositorySuite("nightly.toml"));
   EXPECT_EQ(suite.name, "nightly");
