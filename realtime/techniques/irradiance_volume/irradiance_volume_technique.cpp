@@ -41,7 +41,10 @@ IrradianceVolumeTechnique::IrradianceVolumeTechnique(const ParameterValues& p)
       band_(p.integer("sh_order")),
       indirect_shadows_(p.text("indirect_shadows") == "on"),
       rasterise_every_frame_(p.text("motion") == "objects"),
-      lighting_(shadowSettings(p), p.integer("light_samples")) {}
+      lighting_(shadowSettings(p), p.integer("light_samples")) {
+  // Refused when the technique is created, so a suite is refused before it runs anything.
+  checkProbeAtlasSize(grid_n_, face_, kMaxAtlasTexels);
+}
 
 void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int height) {
   scene_ = &scene;

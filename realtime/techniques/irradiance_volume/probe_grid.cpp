@@ -26,19 +26,33 @@ std::vector<GBufferView> ProbeGrid::views(float near_plane, float far_plane) con
   return result;
 }
 
-ProbeGrid makeProbeGrid(const glm::vec3& bounds_min, const glm::vec3& bounds_max, int n, int face,
-                        long long max_texels) {
+namespace {
+
+ProbeGrid layout(int n, int face) {
   ProbeGrid grid;
   grid.n = n;
   grid.face = face;
-  grid.origin = bounds_min;
-  grid.cell = (bounds_max - bounds_min) / float(n);
   grid.tiles_x = int(std::ceil(std::sqrt(double(grid.tileCount()))));
+  return grid;
+}
+
+}  // namespace
+
+void checkProbeAtlasSize(int n, int face, long long max_texels) {
+  const ProbeGrid grid = layout(n, face);
   const long long texels = (long long)grid.atlasWidth() * grid.atlasHeight();
   if (texels > max_texels)
     throw InputError(fmt::format(
-        "grid={} with face={} needs {} cube-map texels, more than {}; lower grid or face", n, face,
-        texels, max_texels));
+        "grid={} with face={} needs {} cube-map texels, more than {}; lower grid or face", n,
+        face, texels, max_texels));
+}
+
+ProbeGrid makeProbeGrid(const glm::vec3& bounds_min, const glm::vec3& bounds_max, int n, int face,
+                        long long max_texels) {
+  checkProbeAtlasSize(n, face, max_texels);
+  ProbeGrid grid = layout(n, face);
+  grid.origin = bounds_min;
+  grid.cell = (bounds_max - bounds_min) / float(n);
   return grid;
 }
 

@@ -32,6 +32,10 @@ struct ProbeGrid {
   std::vector<GBufferView> views(float near_plane, float far_plane) const;
 };
 
+// Throws gib::InputError when the atlas of n³ probes with face² cube faces would exceed
+// `max_texels`; what makeProbeGrid checks, callable before the scene is known.
+void checkProbeAtlasSize(int n, int face, long long max_texels);
+
 // Throws gib::InputError when the atlas would exceed `max_texels` (a grid of 16³ probes with
 // 64² faces would need 100 M texels per buffer).
 ProbeGrid makeProbeGrid(const glm::vec3& bounds_min, const glm::vec3& bounds_max, int n, int face,

@@ -1,0 +1,62 @@
+#include "support/technique_frames.h"
+
+#include "metrics/pass_timing_summary.h"
+#include "realtime/gl/context.h"
+#include "realtime/gl/gl.h"
+#include "realtime/gl/pass_profiler.h"
+#include "realtime/gpu_scene.h"
+#include "realtime/render_target.h"
+#include "realtime/technique.h"
+#include "scene/builtin_scenes.h"
+
+#include <chrono>
+#include <memory>
+
+namespace gib::rt {
+
+namespace {
+
+gl::Context& benchContext() {
+  static std::unique_ptr<gl::Context> context = gl::Context::create();
+  return *context;
+}
+
+}  // namespace
+
+void benchmarkTechniqueFrames(benchmark::State& state, const std::string& technique_name,
+                              const std::vector<std::string>& set, const std::string& scene_name,
+                              int size) {
+  gl::Context& context = benchContext();
+  context.makeCurrent();
+  const scene::Scene scene = scene::loadScene(scene_name, {});
+  const TechniqueInfo& info = findTechnique(technique_name);
+  std::unique_ptr<Technique> technique =
+      info.create(parseParameters(info.parameters, set, "technique '" + technique_name + "'"));
+  GpuScene gpu_scene(scene, size, size);
+  technique->prepare(gpu_scene, size, size);
+  RenderTarget target(size, size);
+  gl::PassProfiler profiler(context.identity().software);
+  Frame frame{target, profiler};
+  for (int i = 0; i < 2; ++i) {  // warm-up: shader compilation on first use, caches
+    profiler.beginFrame(false);
+    technique->render(frame);
+    profiler.endFrame();
+  }
+  for (auto _ : state) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    profiler.beginFrame(true);
+    target.clear(0, 0, 0);
+    technique->render(frame);
+    profiler.endFrame();
+    glFinish();
+    state.SetIterationTime(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  const ProfileRecord record = profiler.finish();
+  for (const metrics::PassTimingRow& row : metrics::summarizeProfile(record))
+    state.counters[row.path + "_ms"] = row.reported.median;
+  state.SetLabel(context.identity().renderer + ", " + record.reported_clock + " clock");
+}
+
+}  // namespace gib::rt

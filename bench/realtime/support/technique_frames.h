@@ -1,0 +1,18 @@
+// The frame benchmark every real-time technique shares: one frame per benchmark iteration on the
+// machine's GL device, finished with glFinish and timed by wall clock, after warm-up frames; the
+// pass profiler's medians come out as counters "<pass>_ms" in its reported clock (CPU around
+// glFinish on llvmpipe, GPU timestamps on a GPU), and the label names the renderer.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+namespace gib::rt {
+
+void benchmarkTechniqueFrames(benchmark::State& state, const std::string& technique,
+                              const std::vector<std::string>& set, const std::string& scene,
+                              int size);
+
+}  // namespace gib::rt
