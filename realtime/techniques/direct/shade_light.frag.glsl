@@ -3,31 +3,18 @@
 #include "scene/scene.glsl"
 #include "shaders/phong_brdf.glsl"
 #include "techniques/direct/shadow_lookup.glsl"
+#include "shaders/shaded_surface.glsl"
 
-layout(binding = 0) uniform sampler2D u_gbuffer_position;  // xyz world, w ray distance (−1: none)
-layout(binding = 1) uniform sampler2D u_gbuffer_normal;    // xyz geometric normal, w material
 uniform vec3 u_light_intensity;
 uniform float u_cos_cone;
 uniform float u_exponent;
-// Probe views (GBuffer::renderViews) store normals turned towards their own eye, which this pass
-// does not know: it then takes ωo along the normal, exact for Lambert surfaces and, for Phong,
-// the lobe's value at normal viewing (an approximation the irradiance volume accepts).
-uniform bool u_normals_face_viewer;
 layout(location = 0) out vec4 o_radiance;
 
 void main() {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 position = texelFetch(u_gbuffer_position, pixel, 0);
-  if (position.w < 0.0) discard;
-  vec4 normal_material = texelFetch(u_gbuffer_normal, pixel, 0);
-  uint material = uint(normal_material.w);
-  vec3 p = position.xyz;
-  vec3 n = normal_material.xyz;
-  vec3 wo = n;
-  if (!u_normals_face_viewer) {
-    wo = normalize(camera.position.xyz - p);
-    if (dot(n, wo) < 0.0) n = -n;  // reflection is two-sided
-  }
+  ShadedSurface s;
+  if (!shadedSurface(ivec2(gl_FragCoord.xy), s)) discard;
+  vec3 p = s.p, n = s.n, wo = s.wo;
+  uint material = s.material;
 
 #ifdef POINT_LIGHT
   vec3 to_light = u_light_position - p;

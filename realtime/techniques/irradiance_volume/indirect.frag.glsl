@@ -3,30 +3,18 @@
 // materials the normalised lobe around the mirror direction (eq. 5) scaled by the specular one.
 #include "scene/scene.glsl"
 #include "techniques/irradiance_volume/irradiance_volume.glsl"
+#include "shaders/shaded_surface.glsl"
 
-layout(binding = 0) uniform sampler2D u_gbuffer_position;
-layout(binding = 1) uniform sampler2D u_gbuffer_normal;
-uniform bool u_normals_face_viewer;  // probe views (see shade_light.frag.glsl)
 layout(location = 0) out vec4 o_radiance;
 
 void main() {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 position = texelFetch(u_gbuffer_position, pixel, 0);
-  if (position.w < 0.0) discard;
-  vec4 normal_material = texelFetch(u_gbuffer_normal, pixel, 0);
-  uint material = uint(normal_material.w);
-  vec3 p = position.xyz;
-  vec3 n = normal_material.xyz;
-  vec3 wo = n;
-  if (!u_normals_face_viewer) {
-    wo = normalize(camera.position.xyz - p);
-    if (dot(n, wo) < 0.0) n = -n;
-  }
+  ShadedSurface s;
+  if (!shadedSurface(ivec2(gl_FragCoord.xy), s)) discard;
   vec3 L[SH_MAX_COEFFICIENTS];
-  interpolateCoefficients(p, L);
-  vec3 radiance = materialDiffuse(material) * zonalTransfer(L, n, u_lambert_factors);
-  if (materialIsPhong(material))
-    radiance += materialSpecular(material) *
-                zonalTransfer(L, reflect(-wo, n), phong_factors[material]);
+  interpolateCoefficients(s.p, L);
+  vec3 radiance = materialDiffuse(s.material) * zonalTransfer(L, s.n, u_lambert_factors);
+  if (materialIsPhong(s.material))
+    radiance += materialSpecular(s.material) *
+                zonalTransfer(L, reflect(-s.wo, s.n), phong_factors[s.material]);
   o_radiance = vec4(radiance, 0.0);
 }
