@@ -138,15 +138,19 @@ void IrradianceVolumeTechnique::bounce(gl::PassProfiler& profiler,
 
 void IrradianceVolumeTechnique::render(Frame& frame) {
   gl::PassProfiler& profiler = frame.profiler;
-  if (rasterise_every_frame_ || !rasterised_) {
+  // Without bounces the probes are never read: the frame is `direct`'s.
+  const bool probes = bounces_ > 0;
+  if (probes && (rasterise_every_frame_ || !rasterised_)) {
     auto pass = profiler.pass("rasterise cube maps");
     rasteriseProbes();
   }
   camera_gbuffer_->render(*scene_, &profiler);
   lighting_.writeEmission(*scene_, *camera_gbuffer_, frame.target, profiler);
-  probe_direct_->clear(0, 0, 0);
   std::vector<LitView> views = {{&*camera_gbuffer_, &frame.target, "shading", false}};
-  if (bounces_ > 0) views.push_back({&*probe_gbuffer_, &*probe_direct_, "relight cube maps", true});
+  if (probes) {
+    probe_direct_->clear(0, 0, 0);
+    views.push_back({&*probe_gbuffer_, &*probe_direct_, "relight cube maps", true});
+  }
   lighting_.addDirect(*scene_, views, profiler);
   bounce(profiler);
   if (bounces_ > 0) {
