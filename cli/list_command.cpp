@@ -53,19 +53,22 @@ CommandRunner addListCommand(CLI::App& app) {
       return 0;
     }
     if (*what == "techniques") {
-      fmt::print("{:<10} {}\n", "reference",
+      std::size_t width = std::string_view("reference").size();
+      for (const rt::TechniqueInfo& info : rt::techniqueCatalogue())
+        width = std::max(width, info.name.size());
+      fmt::print("{:<{}} {}\n", "reference", width,
                  "Embree path tracer (ground truth); options: --spp --seed --min-bounces "
                  "--max-bounces --checkpoints --threads");
       for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) {
-        fmt::print("{:<10} {}\n", info.name, info.description);
-        fmt::print("{:<10}   source: {}\n", "", info.source);
+        fmt::print("{:<{}} {}\n", info.name, width, info.description);
+        fmt::print("{:<{}}   source: {}\n", "", width, info.source);
         // Constructing a technique does no GL work (that is prepare's), so the list needs no
         // context to say which paths the defaults model.
         const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
-        fmt::print("{:<10}   path class (defaults): {}\n", "",
+        fmt::print("{:<{}}   path class (defaults): {}\n", "", width,
                    scene::describePathClass(info.create(defaults)->pathClass()));
         for (const std::string& line : describeParameters(info.parameters))
-          fmt::print("{:<10}   --set {}\n", "", line);
+          fmt::print("{:<{}}   --set {}\n", "", width, line);
       }
       return 0;
     }
