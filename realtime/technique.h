@@ -21,10 +21,14 @@ namespace gl {
 class PassProfiler;
 }
 
-// What a frame renders into and is timed by.
+// What a frame renders into and is timed by, and where it is in the run: a technique that
+// animates (a moving light) ends its animation at rest on the last frame, frames_left == 0, so
+// the image that is measured is the scene's own.
 struct Frame {
   RenderTarget& target;  // linear float RGB(A) at the output resolution
   gl::PassProfiler& profiler;
+  int frames_left = 0;  // frames of the run after this one
+  int frame_count = 1;  // frames of the run, warm-up included
 };
 
 // An image of a technique's internal state, linear float RGB like the camera image.

@@ -99,8 +99,10 @@ TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& 
     RenderTarget target(settings.width, settings.height);
     if (technique->iterative()) iterate(*technique, settings, precise, target, result);
     gl::PassProfiler profiler(precise);
-    Frame frame{target, profiler};
-    for (int i = 0; i < settings.warmup_frames + settings.frames; ++i) {
+    const int frame_count = settings.warmup_frames + settings.frames;
+    Frame frame{target, profiler, 0, frame_count};
+    for (int i = 0; i < frame_count; ++i) {
+      frame.frames_left = frame_count - 1 - i;
       profiler.beginFrame(i >= settings.warmup_frames);
       target.clear(0, 0, 0);
       technique->render(frame);

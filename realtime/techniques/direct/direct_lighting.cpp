@@ -51,7 +51,8 @@ void DirectLighting::writeEmission(const GpuScene& scene, const GBuffer& gbuffer
 void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>& views,
                                gl::PassProfiler& profiler) {
   auto lights = profiler.pass("lights");
-  for (const LightSample& sample : samples_) {
+  for (LightSample sample : samples_) {
+    if (sample.kind == LightSampleKind::kPoint) sample.position += light_offset_;
     shadow_maps_->render(scene, sample, profiler);
     scene.bindSceneBuffers();
     for (const LitView& view : views) {

@@ -46,6 +46,9 @@ class DirectLighting {
                  gl::PassProfiler& profiler);
 
   std::size_t sampleCount() const { return samples_.size(); }
+  // Moves every point sample (area-light points, spot and point lights) by `offset` for the
+  // next addDirect: a light that moves between frames. Zero restores the scene's lights.
+  void setLightOffset(const glm::vec3& offset) { light_offset_ = offset; }
 
  private:
   const gl::Program& shadeProgram(LightSampleKind kind) const {
@@ -56,6 +59,7 @@ class DirectLighting {
   ShadowSettings shadow_settings_;
   int light_samples_;
   std::vector<LightSample> samples_;
+  glm::vec3 light_offset_{0.0f};
   std::optional<ShadowMaps> shadow_maps_;
   gl::Program emission_, shade_point_, shade_directional_;
   gl::VertexArray empty_vertex_array_;  // core profile draws need one bound

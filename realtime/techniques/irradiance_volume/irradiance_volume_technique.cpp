@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
 #include <functional>
 
 namespace gib::rt {
@@ -136,8 +137,19 @@ void IrradianceVolumeTechnique::bounce(gl::PassProfiler& profiler,
   }
 }
 
+// With motion=light the light travels a circle of a twentieth of the scene's extent, once over
+// the run, and is back at rest on the last frame: every frame relights, reprojects and shades as
+// for a moving light, and the measured image is the scene's.
+glm::vec3 IrradianceVolumeTechnique::lightOffset(const Frame& frame) const {
+  if (rasterise_every_frame_ || frame.frames_left == 0) return glm::vec3(0.0f);
+  const float phase = 6.2831853f * float(frame.frames_left) / float(frame.frame_count);
+  const float radius = 0.05f * glm::length(scene_->boundsMax() - scene_->boundsMin());
+  return radius * glm::vec3(std::sin(phase), 0.0f, 1.0f - std::cos(phase));
+}
+
 void IrradianceVolumeTechnique::render(Frame& frame) {
   gl::PassProfiler& profiler = frame.profiler;
+  lighting_.setLightOffset(lightOffset(frame));
   // Without bounces the probes are never read: the frame is `direct`'s.
   const bool probes = bounces_ > 0;
   if (probes && (rasterise_every_frame_ || !rasterised_)) {
@@ -209,8 +221,9 @@ TechniqueInfo irradianceVolumeTechniqueInfo() {
       choiceParameter("indirect_shadows", "off", {"off", "on"},
                       "§6: weight the eight probes by whether their cube maps see the point"),
       choiceParameter("motion", "objects", {"objects", "light"},
-                      "what may change between frames: objects (rasterise the cube maps every "
-                      "frame, the paper's dynamic scene) or only the light (rasterise once)"),
+                      "what moves between frames: objects (the cube maps are rasterised every "
+                      "frame, the paper's dynamic scene) or the light (it circles, back at rest "
+                      "on the last frame; the cube maps are rasterised once)"),
   };
   for (ParameterSpec spec : directLightingParameters()) info.parameters.push_back(std::move(spec));
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {

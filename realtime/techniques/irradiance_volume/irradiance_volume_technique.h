@@ -36,6 +36,7 @@ class IrradianceVolumeTechnique final : public Technique {
   // (optional) is called with the bounce number once its coefficients are ready.
   void bounce(gl::PassProfiler& profiler, const std::function<void(int)>& after_bounce = {});
   void rasteriseProbes();
+  glm::vec3 lightOffset(const Frame& frame) const;
 
   int bounces_, grid_n_, face_, band_;
   bool indirect_shadows_, rasterise_every_frame_;

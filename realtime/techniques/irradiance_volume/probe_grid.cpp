@@ -43,8 +43,8 @@ void checkProbeAtlasSize(int n, int face, long long max_texels) {
   const long long texels = (long long)grid.atlasWidth() * grid.atlasHeight();
   if (texels > max_texels)
     throw InputError(fmt::format(
-        "grid={} with face={} needs {} cube-map texels, more than {}; lower grid or face", n,
-        face, texels, max_texels));
+        "grid={} with face={} needs {} cube-map texels, more than {}; lower grid or face", n, face,
+        texels, max_texels));
 }
 
 ProbeGrid makeProbeGrid(const glm::vec3& bounds_min, const glm::vec3& bounds_max, int n, int face,
