@@ -4,14 +4,15 @@
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
 
 #include <fmt/format.h>
 
 namespace gib::rt {
 
 const std::vector<TechniqueInfo>& techniqueCatalogue() {
-  static const std::vector<TechniqueInfo> catalogue = {directTechniqueInfo(),
-                                                       irradianceVolumeTechniqueInfo()};
+  static const std::vector<TechniqueInfo> catalogue = {
+      directTechniqueInfo(), stochasticRadiosityTechniqueInfo(), irradianceVolumeTechniqueInfo()};
   return catalogue;
 }
 

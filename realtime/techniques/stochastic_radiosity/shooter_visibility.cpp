@@ -1,0 +1,76 @@
+#include "realtime/techniques/stochastic_radiosity/shooter_visibility.h"
+
+#include "realtime/gl/shader_library.h"
+
+namespace gib::rt {
+
+namespace {
+
+// Fractions of the scene's diagonal: the near plane, and the shooter's lift off its surface
+// (below the near plane, so a surface meeting the shooter at a corner is drawn from its start).
+constexpr float kNearFraction = 1e-4f;
+constexpr float kLiftFraction = 1e-5f;
+constexpr float kNothingDrawn = 1e30f;  // distance where no surface was drawn: visible
+
+}  // namespace
+
+ShooterVisibility::ShooterVisibility(ShooterProjection projection, int map_size, float extent)
+    : projection_(projection),
+      size_(map_size),
+      near_(kNearFraction * extent),
+      far_(2.0f * extent),
+      lift_(kLiftFraction * extent) {
+  const int layers = projection == ShooterProjection::kHemicube ? 5 : 1;
+  distance_ = gl::Texture::make2DArray(GL_R32F, map_size, map_size, layers);
+  distance_.setFilter(GL_NEAREST, GL_NEAREST);
+  depth_ = gl::Texture::make2DArray(GL_DEPTH_COMPONENT32F, map_size, map_size, layers);
+  for (int layer = 0; layer < layers; ++layer) {
+    gl::Framebuffer& fb = faces_[std::size_t(layer)];
+    fb.attachColor(0, distance_, 0, layer);
+    fb.attachDepth(depth_, 0, layer);
+    fb.setDrawBuffers(1);
+    fb.checkComplete();
+  }
+  program_ = gl::buildProgram(
+      {{GL_VERTEX_SHADER, "techniques/stochastic_radiosity/visibility.vert.glsl"},
+       {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/visibility.frag.glsl"}},
+      defines());
+  glProgramUniform1f(program_.id(), program_.uniform("u_near"), near_);
+  glProgramUniform1f(program_.id(), program_.uniform("u_far"), far_);
+  glProgramUniform1f(program_.id(), program_.uniform("u_shooter_lift"), lift_);
+}
+
+std::string ShooterVisibility::defines() const {
+  return projection_ == ShooterProjection::kHemicube ? "#define HEMICUBE\n" : "";
+}
+
+void ShooterVisibility::render(const atlas::AtlasMesh& mesh) const {
+  program_.use();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // every surface occludes, whichever side faces the shooter
+  glDisable(GL_BLEND);
+  const float clear_distance[4] = {kNothingDrawn, 0, 0, 0};
+  const float clear_depth = 1.0f;
+  const bool hemicube = projection_ == ShooterProjection::kHemicube;
+  if (!hemicube) glEnable(GL_CLIP_DISTANCE0);
+  for (int face = 0; face < (hemicube ? 5 : 1); ++face) {
+    const gl::Framebuffer& fb = faces_[std::size_t(face)];
+    glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, clear_distance);
+    glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &clear_depth);
+    fb.bind();
+    // The side faces of the hemicube are half faces: the rows above the shooter's horizon.
+    glViewport(0, 0, size_, face == 0 ? size_ : size_ / 2);
+    if (hemicube) glUniform1i(program_.uniform("u_face"), face);
+    mesh.draw();
+  }
+  glDisable(GL_CLIP_DISTANCE0);
+}
+
+void ShooterVisibility::bindForLookup(const gl::Program& program) const {
+  distance_.bind(kVisibilityUnit);
+  glProgramUniform1i(program.id(), program.uniform("u_map_size"), size_);
+  glProgramUniform1f(program.id(), program.uniform("u_shooter_lift"), lift_);
+}
+
+}  // namespace gib::rt

@@ -1,0 +1,45 @@
+// The first of the two passes of the radiance update (Barsi & Jakab §3.2, book §7.1.2): the
+// scene drawn from the selected shooter into a visibility map of distances, as a hemicube (five
+// draws) or a hemispherical projection (one draw). The shooter is read from the Shooters buffer
+// on the GPU (shooter.glsl), so no selection result travels back to the CPU.
+#pragma once
+
+#include "realtime/atlas/atlas_mesh.h"
+#include "realtime/gl/objects.h"
+
+#include <array>
+#include <string>
+
+namespace gib::rt {
+
+enum class ShooterProjection { kHemicube, kHemisphere };
+
+inline constexpr GLuint kVisibilityUnit = 6;  // visibility_lookup.glsl's u_visibility
+
+class ShooterVisibility {
+ public:
+  // `map_size`: texels per side of a hemicube face (of the hemisphere's disk); `extent`: the
+  // scene's diagonal, which sets the near and far planes and the shooter's lift.
+  ShooterVisibility(ShooterProjection projection, int map_size, float extent);
+
+  ShooterProjection projection() const { return projection_; }
+  // "#define HEMICUBE\n" or nothing: for programs that include visibility_lookup.glsl.
+  std::string defines() const;
+  float shooterLift() const { return lift_; }
+
+  // Draws `mesh` from the shooter in Shooters[0]; the atlas maps and the Shooters buffer must be
+  // bound.
+  void render(const atlas::AtlasMesh& mesh) const;
+  // Binds the map to kVisibilityUnit and sets the lookup's uniforms of `program`.
+  void bindForLookup(const gl::Program& program) const;
+
+ private:
+  ShooterProjection projection_;
+  int size_;
+  float near_, far_, lift_;
+  gl::Program program_;
+  gl::Texture distance_, depth_;
+  std::array<gl::Framebuffer, 5> faces_;
+};
+
+}  // namespace gib::rt

@@ -1,0 +1,232 @@
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
+
+#include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/shader_library.h"
+#include "realtime/gpu_scene.h"
+#include "realtime/render_target.h"
+#include "realtime/techniques/stochastic_radiosity/light_injection.h"
+
+#include <glm/geometric.hpp>
+
+#include <string>
+
+namespace gib::rt {
+
+namespace {
+
+StochasticRadiositySettings settingsFrom(const ParameterValues& p) {
+  StochasticRadiositySettings s;
+  s.atlas_resolution = std::stoi(p.text("atlas"));
+  s.selection = p.text("selection") == "cpu" ? SelectionMethod::kCpu : SelectionMethod::kGpu;
+  s.projection = p.text("projection") == "hemisphere" ? ShooterProjection::kHemisphere
+                                                      : ShooterProjection::kHemicube;
+  s.visibility_size = p.integer("hemicube");
+  s.tessellation = p.integer("tessellation");
+  s.seed = std::uint32_t(p.integer("seed"));
+  return s;
+}
+
+// SplitMix64's finaliser: a counter-based hash, so iteration m's number does not depend on what
+// ran before it.
+std::uint64_t mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+std::vector<glm::vec4> readRgba(const gl::Texture& texture) {
+  std::vector<glm::vec4> values(std::size_t(texture.width()) * std::size_t(texture.height()));
+  glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(values.size() * sizeof(glm::vec4)),
+                    values.data());
+  return values;
+}
+
+}  // namespace
+
+StochasticRadiosityTechnique::StochasticRadiosityTechnique(const ParameterValues& parameters)
+    : settings_(settingsFrom(parameters)) {}
+
+StochasticRadiosityTechnique::StochasticRadiosityTechnique(
+    const StochasticRadiositySettings& settings)
+    : settings_(settings) {}
+
+float StochasticRadiosityTechnique::selectionValue(std::uint32_t seed, int iteration) {
+  const std::uint64_t h =
+      mix((std::uint64_t(seed) << 32) ^ std::uint64_t(std::uint32_t(iteration)));
+  return float(h >> 40) * 0x1p-24f;  // 24 bits: every value exact and below 1
+}
+
+void StochasticRadiosityTechnique::prepare(const GpuScene& scene, int /*width*/, int /*height*/) {
+  scene_ = &scene;
+  const int r = settings_.atlas_resolution;
+
+  // Step 1: the atlas, its maps and the (tessellated) mesh with atlas coordinates.
+  triangles_ = atlas::atlasTriangles(scene.scene());
+  layout_ = atlas::layoutAtlas(triangles_, r);
+  texels_ = atlas::bakeAtlasTexels(triangles_, layout_);
+  atlas_.emplace(texels_, triangles_, scene.scene());
+  mesh_.emplace(triangles_, layout_, settings_.tessellation);
+  const float extent = std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-6f);
+  selection_.emplace(settings_.selection, r);
+  visibility_.emplace(settings_.projection, settings_.visibility_size, extent);
+
+  // Step 2: the source map, emission plus the injected direct light of point and directional
+  // lights.
+  source_ = gl::Texture::make2D(GL_RGBA32F, r, r);
+  glCopyImageSubData(atlas_->emission().id(), GL_TEXTURE_2D, 0, 0, 0, 0, source_.id(),
+                     GL_TEXTURE_2D, 0, 0, 0, 0, r, r, 1);
+  source_framebuffer_.attachColor(0, source_);
+  source_framebuffer_.setDrawBuffers(1);
+  source_framebuffer_.checkComplete();
+  injectDirectLight(scene, *atlas_, source_framebuffer_);
+
+  // Step 3: the reflected estimate starts at zero.
+  const float zero[4] = {0, 0, 0, 0};
+  for (int k = 0; k < 2; ++k) {
+    reflected_[std::size_t(k)] = gl::Texture::make2D(GL_RGBA32F, r, r);
+    glClearTexImage(reflected_[std::size_t(k)].id(), 0, GL_RGBA, GL_FLOAT, zero);
+    gl::Framebuffer& fb = update_[std::size_t(k)];
+    fb.attachColor(0, reflected_[std::size_t(k)]);
+    fb.attachColor(1, selection_->powerMap(), 0);
+    fb.setDrawBuffers(2);
+    fb.checkComplete();
+  }
+  update_program_ =
+      gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
+                        {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/update.frag.glsl"}},
+                       visibility_->defines());
+  view_program_ =
+      gl::buildProgram({{GL_VERTEX_SHADER, "techniques/stochastic_radiosity/view.vert.glsl"},
+                        {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/view.frag.glsl"}});
+
+  // Step 4: the power of the initial estimate (emission and injected light alone): an update
+  // with no shooter (the Shooters buffer starts empty) and m = 1; then its pyramid.
+  iteration_ = 0;
+  current_ = 0;
+  runUpdatePass();
+  selection_->buildPyramid();
+}
+
+void StochasticRadiosityTechnique::runUpdatePass() {
+  const int r = settings_.atlas_resolution;
+  const int next = 1 - current_;
+  update_[std::size_t(next)].bind();
+  glViewport(0, 0, r, r);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  update_program_.use();
+  glUniform1f(update_program_.uniform("u_iteration"), float(std::max(iteration_, 1)));
+  atlas_->bind();
+  source_.bind(4);
+  reflected_[std::size_t(current_)].bind(5);
+  visibility_->bindForLookup(update_program_);
+  selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, kShootersBinding);
+  empty_vertex_array_.bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  current_ = next;
+}
+
+void StochasticRadiosityTechnique::step(gl::PassProfiler& profiler) {
+  ++iteration_;
+  {
+    auto pass = profiler.pass("selection");
+    selection_->select({selectionValue(settings_.seed, iteration_)});
+  }
+  {
+    auto pass = profiler.pass("visibility");
+    atlas_->bind();
+    selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, kShootersBinding);
+    visibility_->render(*mesh_);
+  }
+  {
+    auto pass = profiler.pass("update");
+    runUpdatePass();
+  }
+  if (settings_.selection == SelectionMethod::kGpu) {
+    auto pass = profiler.pass("mipmap");
+    selection_->buildPyramid();
+  }
+}
+
+void StochasticRadiosityTechnique::render(Frame& frame) {
+  auto pass = frame.profiler.pass("view");
+  const scene::Rgb sky = scene_->scene().sky_radiance;
+  frame.target.clear(sky.r, sky.g, sky.b);  // what rays that leave the scene see
+  frame.target.bind();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  view_program_.use();
+  scene_->bindSceneBuffers();
+  atlas_->bind();
+  source_.bind(4);
+  reflected_[std::size_t(current_)].bind(5);
+  mesh_->draw();
+}
+
+std::vector<glm::vec3> StochasticRadiosityTechnique::atlasRadiance() const {
+  const std::vector<glm::vec4> source = readRgba(source_);
+  const std::vector<glm::vec4> reflected = readRgba(reflected_[std::size_t(current_)]);
+  std::vector<glm::vec3> radiance(source.size());
+  for (std::size_t i = 0; i < radiance.size(); ++i)
+    radiance[i] = glm::vec3(source[i]) + glm::vec3(reflected[i]);
+  return radiance;
+}
+
+std::vector<AuxiliaryImage> StochasticRadiosityTechnique::auxiliaryImages() {
+  const int r = settings_.atlas_resolution;
+  const std::vector<glm::vec3> radiance = atlasRadiance();
+  image::Image atlas_image(r, r, 3);
+  for (int y = 0; y < r; ++y)  // GL rows run bottom to top, the image's top to bottom
+    for (int x = 0; x < r; ++x) {
+      const glm::vec3& v = radiance[std::size_t((r - 1 - y) * r + x)];
+      float* out = atlas_image.pixel(x, y);
+      out[0] = v.r, out[1] = v.g, out[2] = v.b;
+    }
+  return {{"atlas",
+           "radiance atlas (emission + injected direct light + reflected estimate) after " +
+               std::to_string(iteration_) + " iterations",
+           std::move(atlas_image)}};
+}
+
+std::vector<TechniqueStatistic> StochasticRadiosityTechnique::statistics() const {
+  return {{"vertices", double(mesh_ ? mesh_->vertexCount() : 0)},
+          {"atlas_texels", double(texels_.covered)}};
+}
+
+TechniqueInfo stochasticRadiosityTechniqueInfo() {
+  TechniqueInfo info;
+  info.name = "stochastic_radiosity";
+  info.description =
+      "diffuse GI (L D* E) by stochastic iteration: random texel shooting into a radiance atlas, "
+      "hemicube or hemispherical visibility; iterations by --iterations; sky and glossy lobes "
+      "left out";
+  info.source =
+      "Barsi & Jakab, Stream Processing in Global Illumination; Szirmay-Kalos et al., GPU-Based "
+      "Techniques for Global Illumination Effects, §7.1";
+  info.parameters = {
+      choiceParameter("atlas", "128", {"64", "128", "256", "512", "1024"},
+                      "radiance atlas texels per side (the book's 128; the paper's 512 and 1024)"),
+      choiceParameter("selection", "gpu", {"gpu", "cpu"},
+                      "texel selection: summed pyramid and hierarchical descent on the GPU, or "
+                      "read-back and linear search on the CPU (the paper's first version)"),
+      choiceParameter("projection", "hemicube", {"hemicube", "hemisphere"},
+                      "shooter visibility: five hemicube faces (the book) or one hemispherical "
+                      "projection (the paper; exact only for small triangles)"),
+      numericParameter("hemicube", ParameterType::kInteger, "256", 16, 2048, "texels",
+                       "visibility map resolution: per hemicube face, or of the hemisphere's disk"),
+      numericParameter("tessellation", ParameterType::kInteger, "0", 0, 5, "levels",
+                       "split every triangle into 4 per level for the technique's draws (the "
+                       "atlas is unchanged)"),
+      numericParameter("seed", ParameterType::kInteger, "0", 0, 2147483647, "",
+                       "random sequence of the texel selections, the same every run"),
+  };
+  info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
+    return std::make_unique<StochasticRadiosityTechnique>(values);
+  };
+  return info;
+}
+
+}  // namespace gib::rt

@@ -1,0 +1,122 @@
+#include "realtime/techniques/stochastic_radiosity/texel_selection.h"
+
+#include "realtime/gl/shader_library.h"
+
+#include <bit>
+#include <stdexcept>
+
+namespace gib::rt {
+
+namespace {
+
+constexpr int kPyramidGroup = 8;   // power_pyramid.comp.glsl's local size
+constexpr int kDescentGroup = 64;  // select_descent.comp.glsl's local size
+
+void bindLevel(GLuint unit, const gl::Texture& texture, int level, GLenum access) {
+  glBindImageTexture(unit, texture.id(), level, GL_FALSE, 0, access, GL_R32F);
+}
+
+}  // namespace
+
+TexelSelection::TexelSelection(SelectionMethod method, int resolution, int capacity)
+    : method_(method), resolution_(resolution), capacity_(capacity) {
+  if (resolution < 1 || !std::has_single_bit(unsigned(resolution)))
+    throw std::invalid_argument("the power map's resolution must be a power of two");
+  levels_ = std::bit_width(unsigned(resolution));  // log2 R + 1
+  power_ = gl::Texture::make2D(GL_R32F, resolution, resolution, levels_);
+  power_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
+  const std::vector<SelectedTexel> initial(std::size_t(capacity), SelectedTexel{});
+  shooters_ = gl::Buffer::fromVector(initial);
+  if (method == SelectionMethod::kGpu) {
+    sum_ = gl::buildProgram(
+        {{GL_COMPUTE_SHADER, "techniques/stochastic_radiosity/power_pyramid.comp.glsl"}});
+    descend_ = gl::buildProgram(
+        {{GL_COMPUTE_SHADER, "techniques/stochastic_radiosity/select_descent.comp.glsl"}});
+  }
+}
+
+void TexelSelection::buildPyramid() const {
+  if (method_ != SelectionMethod::kGpu) return;
+  sum_.use();
+  for (int level = 1; level < levels_; ++level) {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    bindLevel(0, power_, level - 1, GL_READ_ONLY);
+    bindLevel(1, power_, level, GL_WRITE_ONLY);
+    const int size = std::max(1, resolution_ >> level);
+    const GLuint groups = GLuint((size + kPyramidGroup - 1) / kPyramidGroup);
+    glDispatchCompute(groups, groups, 1);
+  }
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void TexelSelection::select(const std::vector<float>& u) {
+  if (int(u.size()) > capacity_)
+    throw std::invalid_argument("more selections than the Shooters buffer holds");
+  if (method_ == SelectionMethod::kGpu)
+    selectOnGpu(u);
+  else
+    selectOnCpu(u);
+}
+
+void TexelSelection::selectOnGpu(const std::vector<float>& u) {
+  std::vector<SelectedTexel> start(u.size());
+  for (std::size_t i = 0; i < u.size(); ++i) start[i].u = u[i];
+  shooters_.update(0, start.size() * sizeof(SelectedTexel), start.data());
+  shooters_.bindBase(GL_SHADER_STORAGE_BUFFER, kShootersBinding);
+  descend_.use();
+  glUniform1i(descend_.uniform("u_count"), GLint(u.size()));
+  bindLevel(1, power_, levels_ - 1, GL_READ_ONLY);
+  const GLuint groups = GLuint((u.size() + kDescentGroup - 1) / kDescentGroup);
+  // log2 R passes, from the level below the top down to the texels themselves.
+  for (int level = levels_ - 2; level >= 0; --level) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glUniform1i(descend_.uniform("u_first"), level == levels_ - 2);
+    bindLevel(0, power_, level, GL_READ_ONLY);
+    glDispatchCompute(groups, 1, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void TexelSelection::selectOnCpu(const std::vector<float>& u) {
+  // The paper's scheme: read the whole map back, sum it, then walk it with a running sum until
+  // the sum passes u·Φ. The read-back waits for every pass before it.
+  std::vector<float> power(std::size_t(resolution_) * std::size_t(resolution_));
+  glGetTextureImage(power_.id(), 0, GL_RED, GL_FLOAT, GLsizei(power.size() * sizeof(float)),
+                    power.data());
+  double total = 0;
+  for (float p : power) total += p;
+  std::vector<SelectedTexel> selected(u.size());
+  for (std::size_t s = 0; s < u.size(); ++s) {
+    SelectedTexel& out = selected[s];
+    out.u = u[s];
+    out.total_power = float(total);
+    if (total <= 0) continue;  // texel stays (−1, −1)
+    const double target = double(u[s]) * total;
+    double running = 0;
+    std::size_t last_with_power = 0;
+    std::size_t chosen = power.size();
+    for (std::size_t i = 0; i < power.size(); ++i) {
+      if (power[i] <= 0) continue;
+      last_with_power = i;
+      running += power[i];
+      if (running > target) {
+        chosen = i;
+        break;
+      }
+    }
+    if (chosen == power.size()) chosen = last_with_power;  // rounding at the very end
+    out.texel = {int(chosen % std::size_t(resolution_)), int(chosen / std::size_t(resolution_))};
+    out.power = power[chosen];
+  }
+  shooters_.update(0, selected.size() * sizeof(SelectedTexel), selected.data());
+}
+
+std::vector<SelectedTexel> TexelSelection::readSelections(int count) const {
+  std::vector<SelectedTexel> out;
+  out.resize(std::size_t(count));
+  glGetNamedBufferSubData(shooters_.id(), 0, GLsizeiptr(out.size() * sizeof(SelectedTexel)),
+                          out.data());
+  return out;
+}
+
+}  // namespace gib::rt

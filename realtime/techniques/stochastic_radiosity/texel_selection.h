@@ -1,0 +1,67 @@
+// Random texel selection with probability proportional to the luminance of the texel's power,
+// p_j = lum(L_j)·A_j / Φ, Φ = Σ lum(L_i)·A_i (Barsi & Jakab §3.1; book §7.1.1), in the two
+// variants the paper measured:
+//   kGpu: a summed pyramid of the power map (log2 R compute passes, each texel the sum of four
+//         below: the paper's and book's "mipmap"), then a descent of log2 R passes from the top,
+//         each choosing one of four children by comparing the running sum with the remaining
+//         selection value (the book's SelectTexel). Nothing is read back.
+//   kCpu: the power map is read back and searched linearly with a running sum (the paper's first
+//         implementation, whose read-back it found to dominate the iteration).
+// Both write the selected texels into one storage buffer (selection.glsl's Shooters), which the
+// later passes read on the GPU. Several selections can run at once (one per value of u), which
+// the tests use; the technique selects one texel per iteration.
+#pragma once
+
+#include "realtime/gl/objects.h"
+
+#include <glm/vec2.hpp>
+
+#include <vector>
+
+namespace gib::rt {
+
+enum class SelectionMethod { kGpu, kCpu };
+
+inline constexpr GLuint kShootersBinding = 1;  // shader storage binding of selection.glsl
+
+// std430 struct Shooter of selection.glsl.
+struct SelectedTexel {
+  glm::ivec2 texel{-1, -1};  // (−1, −1): nothing has power (Φ = 0)
+  float power = 0;           // lum(L_j)·A_j of the selected texel, as the selection saw it
+  float total_power = 0;     // Φ
+  float remaining = 0;       // descent state: the selection value left within the current texel
+  float u = 0;               // the uniform random number in [0, 1) this selection was made with
+  glm::ivec2 padding{0};
+};
+static_assert(sizeof(SelectedTexel) == 32);
+
+class TexelSelection {
+ public:
+  // A power map of resolution × resolution (a power of two), R32F with its pyramid levels;
+  // room for `capacity` simultaneous selections.
+  TexelSelection(SelectionMethod method, int resolution, int capacity = 1);
+
+  SelectionMethod method() const { return method_; }
+  // The power map, lum(L)·A per texel: level 0 is written by the caller (a framebuffer
+  // attachment); the levels above are the pyramid.
+  const gl::Texture& powerMap() const { return power_; }
+  // Sums level 0 up into the pyramid (kGpu only; kCpu has none to build).
+  void buildPyramid() const;
+  // Selects one texel per value of `u` (each in [0, 1)) into the Shooters buffer.
+  void select(const std::vector<float>& u);
+  const gl::Buffer& shooters() const { return shooters_; }
+  // Reads the first `count` selections back (tests, and nothing else: it stalls the pipeline).
+  std::vector<SelectedTexel> readSelections(int count) const;
+
+ private:
+  void selectOnGpu(const std::vector<float>& u);
+  void selectOnCpu(const std::vector<float>& u);
+
+  SelectionMethod method_;
+  int resolution_, levels_, capacity_;
+  gl::Texture power_;
+  gl::Buffer shooters_;
+  gl::Program sum_, descend_;
+};
+
+}  // namespace gib::rt
