@@ -61,6 +61,10 @@ double chiSquarePValue(const DirectionSampler& sample, const DirectionPdf& pdf) 
   }
   EXPECT_NEAR(total, 1.0, 1e-3) << "the density does not integrate to one";
 
+  return chiSquarePValue(observed, expected);
+}
+
+double chiSquarePValue(const std::vector<double>& observed, const std::vector<double>& expected) {
   // Pool the sparse bins into one so every cell meets the validity condition.
   double chi2 = 0, pooled_observed = 0, pooled_expected = 0;
   int cells = 0;

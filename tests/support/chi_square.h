@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include <functional>
+#include <vector>
 
 namespace gib::test {
 
@@ -18,5 +19,9 @@ inline constexpr int kChiSquareSamples = 1000000;
 
 // The density must integrate to one over the sphere (checked with EXPECT_NEAR to 1e-3).
 double chiSquarePValue(const DirectionSampler& sample, const DirectionPdf& pdf);
+
+// The p-value of observed counts against expected counts (same total) over discrete cells,
+// cells expected below 5 pooled into one.
+double chiSquarePValue(const std::vector<double>& observed, const std::vector<double>& expected);
 
 }  // namespace gib::test
