@@ -117,12 +117,12 @@ std::vector<FlatChart> flattenCharts(const std::vector<AtlasTriangle>& triangles
 }
 
 // Texels a chart of `size` scene units occupies at `scale`. A bilinear lookup at texel coordinate
-// t reads texels floor(t − ½) and floor(t − ½) + 1; the chart's points span [g, g + size·scale]
-// with g = kGutterTexels, so the lookups read texels g − 1 ≥ 0 up to ceil(size·scale) + g ≤
-// width − 1 when width = ceil(size·scale) + 2g + 1.
+// t reads texels floor(t − ½) and floor(t − ½) + 1. The chart's points span [g, g + c] with
+// g = kGutterTexels and c = ceil(size·scale), so the lookups read texels g − 1 = 0 up to
+// floor(g + c − ½) + 1 = g + c: a width of c + 2g holds them all.
 glm::ivec2 rectSize(const glm::vec2& size, float scale) {
-  const int extra = 2 * kGutterTexels + 1;
-  return {int(std::ceil(size.x * scale)) + extra, int(std::ceil(size.y * scale)) + extra};
+  const int gutters = 2 * kGutterTexels;
+  return {int(std::ceil(size.x * scale)) + gutters, int(std::ceil(size.y * scale)) + gutters};
 }
 
 // Shelf packing, tallest first; false when the charts do not fit at this scale.
@@ -219,12 +219,13 @@ AtlasLayout layoutAtlas(const std::vector<AtlasTriangle>& triangles, int resolut
   if (charts.empty()) return layout;
 
   // The largest scale at which the charts fit, by bisection: no scale above sqrt(R² / area) can
-  // fit, and a scale of zero leaves every chart its gutter alone.
+  // fit, and the smallest useful one gives every chart one texel inside its gutter.
   double total_area = 0;
   for (const AtlasTriangle& t : triangles) total_area += t.area;
-  double lo = 0, hi = std::sqrt(double(resolution) * resolution / std::max(total_area, 1e-30));
+  double hi = std::sqrt(double(resolution) * resolution / std::max(total_area, 1e-30));
+  double lo = 1e-9 * hi;
   std::vector<ChartRect> rects;
-  if (!packCharts(charts, 0.0f, resolution, rects))
+  if (!packCharts(charts, float(lo), resolution, rects))
     throw InputError(fmt::format(
         "the scene's {} planar charts do not fit a {}x{} atlas even at one texel each; choose a "
         "larger atlas (--set atlas=...)",
