@@ -21,7 +21,50 @@ gl::Context& benchContext() {
   return *context;
 }
 
+// Wall-clock seconds of `work`, finished on the GL device.
+template <typename Work>
+double finishedSeconds(Work&& work) {
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  glFinish();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void reportPasses(benchmark::State& state, gl::PassProfiler& profiler, gl::Context& context) {
+  const ProfileRecord record = profiler.finish();
+  for (const metrics::PassTimingRow& row : metrics::summarizeProfile(record))
+    state.counters[row.path + "_ms"] = row.reported.median;
+  state.SetLabel(context.identity().renderer + ", " + record.reported_clock + " clock");
+}
+
+std::unique_ptr<Technique> createTechnique(const std::string& name,
+                                           const std::vector<std::string>& set) {
+  const TechniqueInfo& info = findTechnique(name);
+  return info.create(parseParameters(info.parameters, set, "technique '" + name + "'"));
+}
+
 }  // namespace
+
+void benchmarkTechniqueIterations(benchmark::State& state, const std::string& technique_name,
+                                  const std::vector<std::string>& set,
+                                  const std::string& scene_name, int warmup_iterations) {
+  gl::Context& context = benchContext();
+  context.makeCurrent();
+  const scene::Scene scene = scene::loadScene(scene_name, {});
+  std::unique_ptr<Technique> technique = createTechnique(technique_name, set);
+  GpuScene gpu_scene(scene, 64, 64);  // the camera image is not drawn
+  technique->prepare(gpu_scene, 64, 64);
+  gl::PassProfiler profiler(context.identity().software);
+  for (int i = 0; i < warmup_iterations; ++i) technique->step(profiler);
+  for (auto _ : state)
+    state.SetIterationTime(finishedSeconds([&] {
+      profiler.beginFrame(true);
+      technique->step(profiler);
+      profiler.endFrame();
+    }));
+  reportPasses(state, profiler, context);
+}
 
 void benchmarkTechniqueFrames(benchmark::State& state, const std::string& technique_name,
                               const std::vector<std::string>& set, const std::string& scene_name,
@@ -29,9 +72,7 @@ void benchmarkTechniqueFrames(benchmark::State& state, const std::string& techni
   gl::Context& context = benchContext();
   context.makeCurrent();
   const scene::Scene scene = scene::loadScene(scene_name, {});
-  const TechniqueInfo& info = findTechnique(technique_name);
-  std::unique_ptr<Technique> technique =
-      info.create(parseParameters(info.parameters, set, "technique '" + technique_name + "'"));
+  std::unique_ptr<Technique> technique = createTechnique(technique_name, set);
   GpuScene gpu_scene(scene, size, size);
   technique->prepare(gpu_scene, size, size);
   RenderTarget target(size, size);
@@ -43,21 +84,14 @@ void benchmarkTechniqueFrames(benchmark::State& state, const std::string& techni
     technique->render(frame);
     profiler.endFrame();
   }
-  for (auto _ : state) {
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    profiler.beginFrame(true);
-    target.clear(0, 0, 0);
-    technique->render(frame);
-    profiler.endFrame();
-    glFinish();
-    state.SetIterationTime(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  const ProfileRecord record = profiler.finish();
-  for (const metrics::PassTimingRow& row : metrics::summarizeProfile(record))
-    state.counters[row.path + "_ms"] = row.reported.median;
-  state.SetLabel(context.identity().renderer + ", " + record.reported_clock + " clock");
+  for (auto _ : state)
+    state.SetIterationTime(finishedSeconds([&] {
+      profiler.beginFrame(true);
+      target.clear(0, 0, 0);
+      technique->render(frame);
+      profiler.endFrame();
+    }));
+  reportPasses(state, profiler, context);
 }
 
 }  // namespace gib::rt

@@ -15,4 +15,10 @@ void benchmarkTechniqueFrames(benchmark::State& state, const std::string& techni
                               const std::vector<std::string>& set, const std::string& scene,
                               int size);
 
+// The same for one iteration of an iterative technique (Technique::step) per benchmark iteration,
+// after `warmup_iterations`; counters "<pass>_ms" are the medians of the iteration's passes.
+void benchmarkTechniqueIterations(benchmark::State& state, const std::string& technique,
+                                  const std::vector<std::string>& set, const std::string& scene,
+                                  int warmup_iterations);
+
 }  // namespace gib::rt

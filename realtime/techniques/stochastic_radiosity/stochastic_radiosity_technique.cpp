@@ -96,6 +96,10 @@ void StochasticRadiosityTechnique::prepare(const GpuScene& scene, int /*width*/,
       gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
                         {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/update.frag.glsl"}},
                        visibility_->defines());
+  glProgramUniform1f(update_program_.id(), update_program_.uniform("u_texel_area"),
+                     layout_.texels_per_unit > 0
+                         ? 1.0f / (layout_.texels_per_unit * layout_.texels_per_unit)
+                         : 0.0f);
   view_program_ =
       gl::buildProgram({{GL_VERTEX_SHADER, "techniques/stochastic_radiosity/view.vert.glsl"},
                         {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/view.frag.glsl"}});

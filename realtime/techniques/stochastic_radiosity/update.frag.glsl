@@ -11,9 +11,12 @@
 // though the power map is being rewritten by this pass.
 //
 // The geometric factor is the book's cos⁺θx·cos⁺θy / |x − y|², except that |x − y|² becomes
-// |x − y|² + A_j/π: the form factor of a disk of the shooter's area seen on its axis, which equals
-// the point formula at distances large against a texel and stays finite for a receiver touching
-// the shooter (at a corner), where the point formula's 1/r² gives unbounded fireflies.
+// |x − y|² + A/π with A the area of a whole texel: the form factor of a disk of a texel's area
+// seen on its axis, which equals the point formula at distances large against a texel and stays
+// finite for a receiver touching the shooter (across a corner), where the point formula's 1/r²
+// gives unbounded fireflies. A whole texel's area rather than the shooter's own (A_j, smaller for
+// a texel the chart's edge cuts): the shooter's sample point may sit anywhere in its texel, and
+// every shot carries the whole power Φ whatever A_j is.
 //
 // Averaging (eq. 2 of Barsi & Jakab): L̃_m = (1/m)(L^e + T*L̃_{m−1}) + (1 − 1/m) L̃_{m−1}; with
 // L̃ = L^e + L̃^r this is L̃^r_m = L̃^r_{m−1} + (T*L̃_{m−1} − L̃^r_{m−1}) / m for the reflected part,
@@ -30,6 +33,7 @@
 layout(binding = 4) uniform sampler2D u_source;     // L^e plus injected direct light
 layout(binding = 5) uniform sampler2D u_reflected;  // L̃^r_{m−1}
 uniform float u_iteration;                          // m ≥ 1
+uniform float u_texel_area;                         // world area of a whole texel
 layout(location = 0) out vec4 o_reflected;
 layout(location = 1) out float o_power;
 
@@ -66,7 +70,7 @@ void main() {
       float shooter_area = texelFetch(u_atlas_normal, s.texel, 0).w;
       vec3 shot = shooter_radiance * (shooter_area * s.total_power / s.power);  // L_j·A_j / p_j
       vec3 brdf = texelFetch(u_atlas_albedo, texel, 0).rgb / kPi;
-      float g = cos_shooter * cos_receiver / (distance_squared + shooter_area / kPi);
+      float g = cos_shooter * cos_receiver / (distance_squared + u_texel_area / kPi);
       transferred = brdf * shot * g;
     }
   }
