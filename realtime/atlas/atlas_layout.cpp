@@ -17,10 +17,16 @@ namespace gib::rt::atlas {
 
 namespace {
 
-// Two triangles are coplanar for chart purposes when their normals agree within ~1.8° and each
-// vertex lies within this fraction of the scene's extent from the other's plane.
-constexpr float kCoplanarCosine = 0.9995f;
-constexpr float kCoplanarDistance = 1e-4f;
+// Two triangles are coplanar for chart purposes when their normals agree within ~2.6° and each
+// vertex lies within this fraction of the scene's extent from the other's plane. Slightly bent
+// quads (the Cornell box's left wall is one, by a few millimetres) stay one chart: each texel's
+// area and sample point are computed on its own triangle, so flattening them costs nothing but
+// a little texel stretch.
+constexpr float kCoplanarCosine = 0.999f;
+constexpr float kCoplanarDistance = 5e-3f;
+// Triangles of a chart whose edges are tried as its axes (a chart's first ones; enough for the
+// rectangles and polygons that planar charts are).
+constexpr std::size_t kAxisCandidates = 16;
 
 struct UnionFind {
   std::vector<int> parent;
@@ -88,15 +94,33 @@ std::vector<FlatChart> flattenCharts(const std::vector<AtlasTriangle>& triangles
     if (chart_of[std::size_t(i)] >= 0)
       charts[std::size_t(chart_of[std::size_t(i)])].triangles.push_back(i);
   for (FlatChart& chart : charts) {
-    // Axes: the first triangle's longest edge and the in-plane perpendicular, so a rectangle made
-    // of two triangles lies axis-aligned (no wasted texels).
+    // Axes: of the edge directions of the chart's first triangles, the one whose bounding box in
+    // the plane has the least area (a rectangle made of two triangles lies axis-aligned, not
+    // along its diagonal, which would waste half its texels).
     const AtlasTriangle& first = triangles[std::size_t(chart.triangles.front())];
-    glm::vec3 edge(0.0f);
-    for (int e = 0; e < 3; ++e) {
-      const glm::vec3 d = first.p[(e + 1) % 3] - first.p[e];
-      if (glm::dot(d, d) > glm::dot(edge, edge)) edge = d;
-    }
-    const glm::vec3 u = glm::normalize(edge), v = glm::cross(first.normal, u);
+    auto boxArea = [&](const glm::vec3& u, const glm::vec3& v) {
+      glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+      for (int t : chart.triangles)
+        for (const glm::vec3& q : triangles[std::size_t(t)].p) {
+          const glm::vec2 flat(glm::dot(q - first.p[0], u), glm::dot(q - first.p[0], v));
+          lo = glm::min(lo, flat), hi = glm::max(hi, flat);
+        }
+      return (hi.x - lo.x) * (hi.y - lo.y);
+    };
+    glm::vec3 u(0.0f);
+    float best = std::numeric_limits<float>::max();
+    const std::size_t candidates = std::min<std::size_t>(chart.triangles.size(), kAxisCandidates);
+    for (std::size_t k = 0; k < candidates; ++k)
+      for (int e = 0; e < 3; ++e) {
+        const AtlasTriangle& t = triangles[std::size_t(chart.triangles[k])];
+        const glm::vec3 d = t.p[(e + 1) % 3] - t.p[e];
+        const glm::vec3 in_plane = d - first.normal * glm::dot(d, first.normal);
+        if (glm::dot(in_plane, in_plane) <= 0) continue;
+        const glm::vec3 axis = glm::normalize(in_plane);
+        const float area = boxArea(axis, glm::cross(first.normal, axis));
+        if (area < best) best = area, u = axis;
+      }
+    const glm::vec3 v = glm::cross(first.normal, u);
     glm::vec2 lo(std::numeric_limits<float>::max());
     for (int t : chart.triangles) {
       std::array<glm::vec2, 3> flat;
