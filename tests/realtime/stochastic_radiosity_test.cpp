@@ -124,6 +124,48 @@ TEST_F(StochasticRadiosityTest, TwoPatchTransferMatchesTheAnalyticFormFactor) {
   }
 }
 
+// Spot lights are injected as first-bounce light (light_injection.h): before any iteration every
+// texel of a floor under a spot light holds ρ/π · I · cos θ / d², the analytic reflected radiance
+// (the floor cannot shadow itself, so only the shadow map's bias could make a texel dark).
+TEST_F(StochasticRadiosityTest, SpotLightIsInjectedWithItsAnalyticReflectedRadiance) {
+  scene::Scene s;
+  s.name = "spot_over_floor";
+  s.camera.position = {0.5f, 2.0f, -2.0f};
+  s.camera.look_at = {0.5f, 0.0f, 0.5f};
+  scene::Material floor_material;
+  floor_material.name = "floor";
+  floor_material.diffuse = scene::Rgb(kAlbedo);
+  s.materials = {floor_material};
+  scene::Mesh floor;
+  scene::appendQuad(floor, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0});  // normal +y
+  s.meshes = {floor};
+  scene::SpotLight spot;
+  spot.position = {0.5f, 1.0f, 0.5f};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  spot.intensity = scene::Rgb(2.0f);
+  spot.cone_angle_deg = 80.0f;  // the whole floor is inside the cone
+  s.spot_lights = {spot};
+
+  GpuScene gpu_scene(s, 16, 16);
+  StochasticRadiositySettings settings;
+  settings.atlas_resolution = 64;
+  StochasticRadiosityTechnique technique(settings);
+  technique.prepare(gpu_scene, 16, 16);
+  const std::vector<glm::vec3> radiance = technique.atlasRadiance();
+  const atlas::AtlasTexels& texels = technique.atlasTexels();
+  int checked = 0;
+  for (std::size_t i = 0; i < texels.texels.size(); ++i) {
+    const atlas::AtlasTexel& t = texels.texels[i];
+    if (t.area <= 0) continue;
+    const glm::vec3 to_light = spot.position - t.position;
+    const float d = glm::length(to_light);
+    const float expected = kAlbedo / std::numbers::pi_v<float> * 2.0f * (to_light.y / d) / (d * d);
+    EXPECT_NEAR(radiance[i].g, expected, 0.01f * expected) << "texel " << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+}
+
 TechniqueRunSettings smallRun(int iterations) {
   TechniqueRunSettings settings;
   settings.width = 32;

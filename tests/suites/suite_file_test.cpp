@@ -614,14 +614,14 @@ TEST(RepositorySuites, SmokeSuiteParses) {
         << "keep the smoke suite quick";
   }
   EXPECT_THAT(ids, ElementsAre("cornell-reference", "cornell-direct/shadow=hard",
-                               "cornell-direct/shadow=pcf", "cornell-direct/shadow=vsm"));
+                               "cornell-direct/shadow=pcf", "cornell-direct/shadow=vsm",
+                               "cornell-stochastic_radiosity"));
 }
 
 TEST(RepositorySuites, EveryFigureSuiteParsesAndShowsThePapersNumbersOrCharts) {
   int count = 0;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::filesystem::path(GIB_SOURCE_DIR) / "suites" /
-                                           "figures")) {
+  for (const auto& entry : std::filesystem::directory_iterator(
+           std::filesystem::path(GIB_SOURCE_DIR) / "suites" / "figures")) {
     if (entry.path().extension() != ".toml") continue;
     ++count;
     const Suite suite = loadSuiteFile(entry.path());
