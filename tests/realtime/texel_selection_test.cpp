@@ -63,7 +63,9 @@ TEST_P(TexelSelectionTest, FrequenciesFollowPowerByChiSquare) {
   std::vector<double> expected(power.size());
   for (std::size_t i = 0; i < power.size(); ++i) {
     expected[i] = kSelections * power[i] / total;
-    if (power[i] == 0) EXPECT_EQ(observed[i], 0.0) << "texel " << i << " has no power";
+    if (power[i] == 0) {
+      EXPECT_EQ(observed[i], 0.0) << "texel " << i << " has no power";
+    }
   }
   EXPECT_GT(test::chiSquarePValue(observed, expected), kSignificance);
 
