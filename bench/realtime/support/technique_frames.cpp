@@ -55,7 +55,7 @@ void benchmarkTechniqueIterations(benchmark::State& state, const std::string& te
   std::unique_ptr<Technique> technique = createTechnique(technique_name, set);
   GpuScene gpu_scene(scene, 64, 64);  // the camera image is not drawn
   technique->prepare(gpu_scene, 64, 64);
-  gl::PassProfiler profiler(context.identity().software);
+  gl::PassProfiler profiler(context.identity().software, 4, "iteration");  // as the runner names it
   for (int i = 0; i < warmup_iterations; ++i) technique->step(profiler);
   for (auto _ : state)
     state.SetIterationTime(finishedSeconds([&] {
