@@ -1,6 +1,7 @@
 #include "realtime/technique_runner.h"
 
 #include "common/input_error.h"
+#include "realtime/gl/finished_time.h"
 #include "realtime/gl/gl.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gpu_scene.h"
@@ -8,23 +9,11 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <stdexcept>
 
 namespace gib::rt {
 
 namespace {
-
-// Wall-clock milliseconds of `work`, finished on the GPU.
-template <typename F>
-double timedMilliseconds(F&& work) {
-  glFinish();
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 void checkSettings(const TechniqueRunSettings& s) {
   constexpr int kMaxSize = 16384;
@@ -67,7 +56,7 @@ void iterate(Technique& technique, const TechniqueRunSettings& settings, bool pr
   };
   capture(0);
   for (int i = 1; i <= settings.iterations; ++i) {
-    result.iterate_ms += timedMilliseconds([&] {
+    result.iterate_ms += gl::finishedMilliseconds([&] {
       profiler.beginFrame(true);
       technique.step(profiler);
       profiler.endFrame();
@@ -90,10 +79,10 @@ TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& 
   {
     std::unique_ptr<Technique> technique = info.create(parameters);
     std::optional<GpuScene> gpu_scene;
-    result.upload_ms =
-        timedMilliseconds([&] { gpu_scene.emplace(scene, settings.width, settings.height); });
-    result.prepare_ms =
-        timedMilliseconds([&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
+    result.upload_ms = gl::finishedMilliseconds(
+        [&] { gpu_scene.emplace(scene, settings.width, settings.height); });
+    result.prepare_ms = gl::finishedMilliseconds(
+        [&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
     result.statistics = technique->statistics();
     const bool precise = settings.precise.value_or(result.gl.software);
     RenderTarget target(settings.width, settings.height);

@@ -2,6 +2,7 @@
 
 #include "metrics/pass_timing_summary.h"
 #include "realtime/gl/context.h"
+#include "realtime/gl/finished_time.h"
 #include "realtime/gl/gl.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gpu_scene.h"
@@ -9,7 +10,6 @@
 #include "realtime/technique.h"
 #include "scene/builtin_scenes.h"
 
-#include <chrono>
 #include <memory>
 
 namespace gib::rt {
@@ -19,16 +19,6 @@ namespace {
 gl::Context& benchContext() {
   static std::unique_ptr<gl::Context> context = gl::Context::create();
   return *context;
-}
-
-// Wall-clock seconds of `work`, finished on the GL device.
-template <typename Work>
-double finishedSeconds(Work&& work) {
-  glFinish();
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  glFinish();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void reportPasses(benchmark::State& state, gl::PassProfiler& profiler, gl::Context& context) {
@@ -58,11 +48,11 @@ void benchmarkTechniqueIterations(benchmark::State& state, const std::string& te
   gl::PassProfiler profiler(context.identity().software, 4, "iteration");  // as the runner names it
   for (int i = 0; i < warmup_iterations; ++i) technique->step(profiler);
   for (auto _ : state)
-    state.SetIterationTime(finishedSeconds([&] {
-      profiler.beginFrame(true);
-      technique->step(profiler);
-      profiler.endFrame();
-    }));
+    state.SetIterationTime(1e-3 * gl::finishedMilliseconds([&] {
+                             profiler.beginFrame(true);
+                             technique->step(profiler);
+                             profiler.endFrame();
+                           }));
   reportPasses(state, profiler, context);
 }
 
@@ -85,12 +75,12 @@ void benchmarkTechniqueFrames(benchmark::State& state, const std::string& techni
     profiler.endFrame();
   }
   for (auto _ : state)
-    state.SetIterationTime(finishedSeconds([&] {
-      profiler.beginFrame(true);
-      target.clear(0, 0, 0);
-      technique->render(frame);
-      profiler.endFrame();
-    }));
+    state.SetIterationTime(1e-3 * gl::finishedMilliseconds([&] {
+                             profiler.beginFrame(true);
+                             target.clear(0, 0, 0);
+                             technique->render(frame);
+                             profiler.endFrame();
+                           }));
   reportPasses(state, profiler, context);
 }
 

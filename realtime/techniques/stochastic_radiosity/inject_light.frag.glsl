@@ -6,6 +6,7 @@
 #include "atlas/atlas_maps.glsl"
 #include "techniques/direct/shadow_lookup.glsl"
 #include "techniques/direct/light_irradiance.glsl"
+#include "shaders/phong_brdf.glsl"
 
 layout(location = 0) out vec4 o_radiance;
 
@@ -18,6 +19,6 @@ void main() {
   if (!lightSampleIrradiance(p, wi, irradiance)) discard;
   float cos_surface = dot(n, wi);
   if (cos_surface <= 0.0) discard;
-  vec3 brdf = texelFetch(u_atlas_albedo, texel, 0).rgb / 3.14159265358979;
+  vec3 brdf = texelFetch(u_atlas_albedo, texel, 0).rgb * kInvPi;
   o_radiance = vec4(brdf * irradiance * (cos_surface * lightVisibility(p, n)), 0.0);
 }

@@ -67,8 +67,11 @@ void ShooterVisibility::render(const atlas::AtlasMesh& mesh) const {
   glDisable(GL_CLIP_DISTANCE0);
 }
 
-void ShooterVisibility::bindForLookup(const gl::Program& program) const {
+void ShooterVisibility::bindForLookup() const {
   distance_.bind(kVisibilityUnit);
+}
+
+void ShooterVisibility::setLookupConstants(const gl::Program& program) const {
   glProgramUniform1i(program.id(), program.uniform("u_map_size"), size_);
   glProgramUniform1f(program.id(), program.uniform("u_shooter_lift"), lift_);
 }

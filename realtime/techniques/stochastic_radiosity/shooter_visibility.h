@@ -30,8 +30,10 @@ class ShooterVisibility {
   // Draws `mesh` from the shooter in Shooters[0]; the atlas maps and the Shooters buffer must be
   // bound.
   void render(const atlas::AtlasMesh& mesh) const;
-  // Binds the map to kVisibilityUnit and sets the lookup's uniforms of `program`.
-  void bindForLookup(const gl::Program& program) const;
+  // Sets the lookup's constant uniforms of `program` (once, after it is built).
+  void setLookupConstants(const gl::Program& program) const;
+  // Binds the map to kVisibilityUnit.
+  void bindForLookup() const;
 
  private:
   ShooterProjection projection_;

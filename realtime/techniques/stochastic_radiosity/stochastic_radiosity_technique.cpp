@@ -35,13 +35,6 @@ std::uint64_t mix(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
-std::vector<glm::vec4> readRgba(const gl::Texture& texture) {
-  std::vector<glm::vec4> values(std::size_t(texture.width()) * std::size_t(texture.height()));
-  glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(values.size() * sizeof(glm::vec4)),
-                    values.data());
-  return values;
-}
-
 }  // namespace
 
 StochasticRadiosityTechnique::StochasticRadiosityTechnique(const ParameterValues& parameters)
@@ -96,6 +89,7 @@ void StochasticRadiosityTechnique::prepare(const GpuScene& scene, int /*width*/,
       gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
                         {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/update.frag.glsl"}},
                        visibility_->defines());
+  visibility_->setLookupConstants(update_program_);
   glProgramUniform1f(update_program_.id(), update_program_.uniform("u_texel_area"),
                      layout_.texels_per_unit > 0
                          ? 1.0f / (layout_.texels_per_unit * layout_.texels_per_unit)
@@ -124,7 +118,7 @@ void StochasticRadiosityTechnique::runUpdatePass() {
   atlas_->bind();
   source_.bind(4);
   reflected_[std::size_t(current_)].bind(5);
-  visibility_->bindForLookup(update_program_);
+  visibility_->bindForLookup();
   selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, kShootersBinding);
   empty_vertex_array_.bind();
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -170,29 +164,31 @@ void StochasticRadiosityTechnique::render(Frame& frame) {
   mesh_->draw();
 }
 
+image::Image StochasticRadiosityTechnique::atlasImage() const {
+  image::Image radiance = gl::readTexture(source_, 3);
+  const image::Image reflected = gl::readTexture(reflected_[std::size_t(current_)], 3);
+  for (std::size_t i = 0; i < radiance.data().size(); ++i)
+    radiance.data()[i] += reflected.data()[i];
+  return radiance;
+}
+
 std::vector<glm::vec3> StochasticRadiosityTechnique::atlasRadiance() const {
-  const std::vector<glm::vec4> source = readRgba(source_);
-  const std::vector<glm::vec4> reflected = readRgba(reflected_[std::size_t(current_)]);
-  std::vector<glm::vec3> radiance(source.size());
-  for (std::size_t i = 0; i < radiance.size(); ++i)
-    radiance[i] = glm::vec3(source[i]) + glm::vec3(reflected[i]);
+  const image::Image image = atlasImage();
+  const int r = image.height();
+  std::vector<glm::vec3> radiance(std::size_t(r) * std::size_t(r));
+  for (int y = 0; y < r; ++y)  // the image's rows run top to bottom, GL's bottom to top
+    for (int x = 0; x < r; ++x) {
+      const float* v = image.pixel(x, r - 1 - y);
+      radiance[std::size_t(y * r + x)] = {v[0], v[1], v[2]};
+    }
   return radiance;
 }
 
 std::vector<AuxiliaryImage> StochasticRadiosityTechnique::auxiliaryImages() {
-  const int r = settings_.atlas_resolution;
-  const std::vector<glm::vec3> radiance = atlasRadiance();
-  image::Image atlas_image(r, r, 3);
-  for (int y = 0; y < r; ++y)  // GL rows run bottom to top, the image's top to bottom
-    for (int x = 0; x < r; ++x) {
-      const glm::vec3& v = radiance[std::size_t((r - 1 - y) * r + x)];
-      float* out = atlas_image.pixel(x, y);
-      out[0] = v.r, out[1] = v.g, out[2] = v.b;
-    }
   return {{"atlas",
            "radiance atlas (emission + injected direct light + reflected estimate) after " +
                std::to_string(iteration_) + " iterations",
-           std::move(atlas_image)}};
+           atlasImage()}};
 }
 
 std::vector<TechniqueStatistic> StochasticRadiosityTechnique::statistics() const {

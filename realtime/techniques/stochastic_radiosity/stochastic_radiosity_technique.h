@@ -50,6 +50,8 @@ class StochasticRadiosityTechnique final : public Technique {
   // reflected), row 0 at the bottom like the atlas texels.
   const atlas::AtlasTexels& atlasTexels() const { return texels_; }
   std::vector<glm::vec3> atlasRadiance() const;
+  // The same as an image, top row first (the auxiliary image "atlas").
+  image::Image atlasImage() const;
 
   // The uniform random number of iteration m (1-based): the same for every run with this seed,
   // so a frame sequence does not flicker (book §7.1.2).

@@ -23,7 +23,9 @@ TexelSelection::TexelSelection(SelectionMethod method, int resolution, int capac
   if (resolution < 1 || !std::has_single_bit(unsigned(resolution)))
     throw std::invalid_argument("the power map's resolution must be a power of two");
   levels_ = std::bit_width(unsigned(resolution));  // log2 R + 1
-  power_ = gl::Texture::make2D(GL_R32F, resolution, resolution, levels_);
+  // Only the GPU descent reads the pyramid's levels above the texels.
+  power_ = gl::Texture::make2D(GL_R32F, resolution, resolution,
+                               method == SelectionMethod::kGpu ? levels_ : 1);
   power_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
   const std::vector<SelectedTexel> initial(std::size_t(capacity), SelectedTexel{});
   shooters_ = gl::Buffer::fromVector(initial);
@@ -80,7 +82,8 @@ void TexelSelection::selectOnGpu(const std::vector<float>& u) {
 void TexelSelection::selectOnCpu(const std::vector<float>& u) {
   // The paper's scheme: read the whole map back, sum it, then walk it with a running sum until
   // the sum passes u·Φ. The read-back waits for every pass before it.
-  std::vector<float> power(std::size_t(resolution_) * std::size_t(resolution_));
+  std::vector<float>& power = read_back_;
+  power.resize(std::size_t(resolution_) * std::size_t(resolution_));
   glGetTextureImage(power_.id(), 0, GL_RED, GL_FLOAT, GLsizei(power.size() * sizeof(float)),
                     power.data());
   double total = 0;

@@ -60,6 +60,7 @@ class TexelSelection {
   SelectionMethod method_;
   int resolution_, levels_, capacity_;
   gl::Texture power_;
+  std::vector<float> read_back_;  // kCpu: the power map's texels, reused every selection
   gl::Buffer shooters_;
   gl::Program sum_, descend_;
 };

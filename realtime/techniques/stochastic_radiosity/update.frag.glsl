@@ -29,6 +29,7 @@
 // side, gets nothing (reflection in the atlas is the front side's).
 #include "techniques/stochastic_radiosity/shooter.glsl"
 #include "techniques/stochastic_radiosity/visibility_lookup.glsl"
+#include "shaders/phong_brdf.glsl"
 
 layout(binding = 4) uniform sampler2D u_source;     // L^e plus injected direct light
 layout(binding = 5) uniform sampler2D u_reflected;  // L̃^r_{m−1}
@@ -36,8 +37,6 @@ uniform float u_iteration;                          // m ≥ 1
 uniform float u_texel_area;                         // world area of a whole texel
 layout(location = 0) out vec4 o_reflected;
 layout(location = 1) out float o_power;
-
-const float kPi = 3.14159265358979;
 
 float luminance(vec3 c) {
   return dot(c, vec3(0.2126, 0.7152, 0.0722));
@@ -69,8 +68,8 @@ void main() {
       vec3 shooter_radiance = texelFetch(u_source, s.texel, 0).rgb + texelFetch(u_reflected, s.texel, 0).rgb;
       float shooter_area = texelFetch(u_atlas_normal, s.texel, 0).w;
       vec3 shot = shooter_radiance * (shooter_area * s.total_power / s.power);  // L_j·A_j / p_j
-      vec3 brdf = texelFetch(u_atlas_albedo, texel, 0).rgb / kPi;
-      float g = cos_shooter * cos_receiver / (distance_squared + u_texel_area / kPi);
+      vec3 brdf = texelFetch(u_atlas_albedo, texel, 0).rgb * kInvPi;
+      float g = cos_shooter * cos_receiver / (distance_squared + u_texel_area * kInvPi);
       transferred = brdf * shot * g;
     }
   }
