@@ -3,6 +3,8 @@
 // hold scene-linear Rec.709 RGB radiance unless a layer says otherwise.
 #pragma once
 
+#include "common/luminance_shared.h"
+
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -47,9 +49,10 @@ class Image {
 // every error metric would silently turn into NaN.
 std::size_t countNonFinite(const Image& image);
 
-// The luminance of linear Rec.709 RGB (ITU-R BT.709 weights).
+// The luminance of linear Rec.709 RGB (ITU-R BT.709 weights, common/luminance_shared.h).
 inline float rec709Luminance(const float* rgb) {
-  return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
+  return float(kLuminanceRed) * rgb[0] + float(kLuminanceGreen) * rgb[1] +
+         float(kLuminanceBlue) * rgb[2];
 }
 
 }  // namespace gib::image

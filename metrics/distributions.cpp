@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 namespace gib::metrics {
@@ -98,7 +99,7 @@ double normalQuantile(double p) {
   }
   // One Halley step on Φ(x) − p brings the error to machine precision.
   double e = normalCdf(x) - p;
-  double u = e * std::sqrt(2 * M_PI) * std::exp(x * x / 2);
+  double u = e * std::sqrt(2 * std::numbers::pi) * std::exp(x * x / 2);
   return x - u / (1 + x * u / 2);
 }
 

@@ -1,5 +1,7 @@
 #include "metrics/flip.h"
 
+#include "common/luminance_shared.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -34,8 +36,6 @@ constexpr double kToneMapInputBound = 1e18;
 // The exposure range maps the reference's maximum and median luminance to this tone-mapped
 // value (HDR-FLIP paper, exposure range; NVlabs/flip v1.6).
 constexpr double kExposureTarget = 0.85;
-// Luminance of linear Rec.709 (DESIGN.md, "Radiometry").
-constexpr double kLumR = 0.2126, kLumG = 0.7152, kLumB = 0.0722;
 
 void checkInputs(const image::Image& reference, const image::Image& test) {
   if (reference.width() != test.width() || reference.height() != test.height())
@@ -148,7 +148,7 @@ FlipExposureRange computeFlipExposureRange(const image::Image& reference) {
   for (int y = 0; y < reference.height(); ++y)
     for (int x = 0; x < reference.width(); ++x) {
       const float* p = reference.pixel(x, y);
-      const double l = isFinitePixel(p) ? kLumR * p[0] + kLumG * p[1] + kLumB * p[2] : 0.0;
+      const double l = isFinitePixel(p) ? kLuminanceRed * p[0] + kLuminanceGreen * p[1] + kLuminanceBlue * p[2] : 0.0;
       luminance.push_back(l);
       if (l > 0) smallest_positive = std::min(smallest_positive, l);
     }

@@ -1,5 +1,7 @@
 #include "metrics/ssim.h"
 
+#include "common/luminance_shared.h"
+
 #include "metrics/tone_map.h"
 
 #include <tbb/blocked_range.h>
@@ -68,7 +70,8 @@ std::vector<float> displayLuminance(const image::Image& image) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const float* p = image.data().data() + 3 * i;
       auto encode = [](float v) { return std::isfinite(v) ? displayEncode(v) : 0.0f; };
-      y[i] = 0.2126f * encode(p[0]) + 0.7152f * encode(p[1]) + 0.0722f * encode(p[2]);
+      y[i] = float(kLuminanceRed) * encode(p[0]) + float(kLuminanceGreen) * encode(p[1]) +
+             float(kLuminanceBlue) * encode(p[2]);
     }
   });
   return y;

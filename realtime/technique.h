@@ -5,6 +5,7 @@
 
 #include "common/parameters.h"
 #include "image/image.h"
+#include "realtime/pass_declarations.h"
 #include "scene/path_class.h"
 
 #include <functional>
@@ -61,7 +62,8 @@ class Technique {
   virtual void step(gl::PassProfiler& /*profiler*/) {}
   virtual int iterations() const { return 0; }
 
-  // The light paths this technique models with its current parameters (DESIGN.md, path classes).
+  // The light paths this technique models with its current parameters (docs/architecture.md,
+  // "Path classes").
   virtual scene::PathClass pathClass() const = 0;
 
   // Images of the technique's internal state that a paper shows beside the camera image (a
@@ -80,6 +82,9 @@ struct TechniqueInfo {
   std::string description;  // one line
   std::string source;       // the document and section it implements
   ParameterTable parameters;
+  // Every pass its frames and iterations may time, whatever the parameters (a variance shadow
+  // map's filter, a GPU selection's pyramid): the runner refuses a profile with any other.
+  PassDeclarations passes;
   std::function<std::unique_ptr<Technique>(const ParameterValues&)> create;
 };
 

@@ -4,7 +4,7 @@
 #include "realtime/gl/finished_time.h"
 #include "realtime/gl/gl.h"
 #include "realtime/gl/pass_profiler.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
 
 #include <fmt/format.h>
@@ -41,7 +41,7 @@ void checkSettings(const TechniqueRunSettings& s) {
 // requested counts. A capture renders outside any profiled frame, so it is not timed.
 void iterate(Technique& technique, const TechniqueRunSettings& settings, bool precise,
              RenderTarget& target, TechniqueRunResult& result) {
-  gl::PassProfiler profiler(precise, 4, "iteration");
+  gl::PassProfiler profiler(precise, 4, kIterationPass);
   gl::PassProfiler untimed(precise);
   Frame capture_frame{target, untimed};
   std::size_t next_capture = 0;
@@ -65,6 +65,16 @@ void iterate(Technique& technique, const TechniqueRunSettings& settings, bool pr
   }
   result.iteration_profile = profiler.finish();
   result.iterations = technique.iterations();
+}
+
+// A pass the technique does not declare would be invisible to suites and to the declared list the
+// README shows: a bug in the technique, found by every test that runs it.
+void checkDeclared(const TechniqueInfo& info, const ProfileRecord& record) {
+  for (const PassRecord& pass : record.passes)
+    if (!info.passes.declares(pass.path))
+      throw std::logic_error(fmt::format(
+          "technique '{}' timed the pass '{}', which its TechniqueInfo::passes does not declare",
+          info.name, pass.path));
 }
 
 }  // namespace
@@ -98,6 +108,8 @@ TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& 
       profiler.endFrame();
     }
     result.profile = profiler.finish();
+    checkDeclared(info, result.profile);
+    checkDeclared(info, result.iteration_profile);
     result.image = target.read();
     result.auxiliary = technique->auxiliaryImages();
     result.path_class = technique->pathClass();

@@ -1,5 +1,6 @@
 // ReferenceStore::verify: a stored reference against a fresh render of the same spec.
 #include "common/input_error.h"
+#include "common/splitmix.h"
 #include "metrics/z_test.h"
 #include "reference/reference_store.h"
 #include "reference/reference_store_entry.h"
@@ -12,10 +13,6 @@
 namespace gib::ref {
 
 namespace {
-
-// Added to the stored seed (the golden-ratio increment of SplitMix64): the fresh render's noise
-// is independent of the stored one's, which the Z-test's combined variance assumes.
-constexpr std::uint64_t kVerifySeedOffset = 0x9e3779b97f4a7c15ull;
 
 void checkVerifySettings(std::uint32_t spp, double significance) {
   if (spp < 2)
@@ -62,7 +59,9 @@ VerifyResult ReferenceStore::verify(const StoreEntry& entry, std::uint32_t spp, 
   // Step 2: a fresh render with independent noise, Z-tested against the stored mean.
   ReferenceSpec fresh_spec = entry.spec;
   fresh_spec.spp = spp;
-  fresh_spec.seed = entry.spec.seed + kVerifySeedOffset;
+  // The fresh render's noise is independent of the stored one's, which the Z-test's combined
+  // variance assumes.
+  fresh_spec.seed = independentSeed(entry.spec.seed);
   const RenderResult fresh = renderReference(scene, renderSettingsOf(fresh_spec, progress));
   metrics::ZTestOptions options;
   options.significance = significance;

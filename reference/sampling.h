@@ -6,9 +6,11 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <numbers>
+
 namespace gib::ref {
 
-inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr float kPi = std::numbers::pi_v<float>;
 inline constexpr float kInvPi = 1.0f / kPi;
 
 // An orthonormal basis around a unit vector (Duff et al. 2017, "Building an Orthonormal Basis,

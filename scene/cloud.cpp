@@ -13,6 +13,7 @@
 // The arithmetic is done in double and rounded to float once: a last-bit difference in a
 // library's cos, sin or cbrt (the only functions used that IEEE does not pin down) survives that
 // rounding almost never, so the scene hash is the same with any standard library.
+#include "common/splitmix.h"
 #include "scene/builtin_scenes.h"
 
 #include <glm/geometric.hpp>
@@ -54,20 +55,12 @@ constexpr int kMaxPlacementTries = 32;
 // Independent random streams of the hash.
 enum class Stream : std::uint64_t { kLayout = 1, kParticle = 2 };
 
-// splitmix64's finaliser: a bijective mix of 64 bits.
-std::uint64_t mixBits(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
-
 // A uniform number in [0, 1) for (seed, stream, index, dimension); 53 random bits.
 double uniform01(std::uint64_t seed, Stream stream, std::uint64_t index, std::uint64_t dimension) {
-  std::uint64_t h = mixBits(seed);
-  h = mixBits(h ^ static_cast<std::uint64_t>(stream));
-  h = mixBits(h ^ index);
-  h = mixBits(h ^ dimension);
+  std::uint64_t h = splitMix64(seed);
+  h = splitMix64(h ^ static_cast<std::uint64_t>(stream));
+  h = splitMix64(h ^ index);
+  h = splitMix64(h ^ dimension);
   return double(h >> 11) * 0x1.0p-53;
 }
 

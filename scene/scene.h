@@ -4,6 +4,8 @@
 // directional irradiance in W/m² on a plane perpendicular to the light.
 #pragma once
 
+#include "common/luminance_shared.h"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -16,9 +18,9 @@ namespace gib::scene {
 
 using Rgb = glm::vec3;
 
-// Luminance of linear Rec.709 RGB; used everywhere (importance sampling, metrics, tone mapping).
+// Luminance of linear Rec.709 RGB (common/luminance_shared.h); used for importance sampling.
 inline float luminance(const Rgb& c) {
-  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+  return float(kLuminanceRed) * c.r + float(kLuminanceGreen) * c.g + float(kLuminanceBlue) * c.b;
 }
 
 enum class MaterialType { kLambert, kPhong };

@@ -2,6 +2,7 @@
 
 #include "common/content_hash.h"
 #include "common/input_error.h"
+#include "common/splitmix.h"
 #include "gib/version.h"
 #include "image/display.h"
 #include "image/exr_io.h"
@@ -29,10 +30,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-// The convergence series of a reference job is rendered with samples of their own: error against
-// a reference that shares its samples would look better than it is.
-constexpr std::uint64_t kConvergenceSeedOffset = 0x9e3779b97f4a7c15ull;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -170,7 +167,9 @@ void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const fs::
     ref::RenderSettings settings;
     settings.width = p.width;
     settings.height = p.height;
-    settings.seed = p.job->settings.reference.seed + kConvergenceSeedOffset;
+    // The convergence series is rendered with samples of its own: error against a reference
+    // that shares its samples would look better than it is.
+    settings.seed = independentSeed(p.job->settings.reference.seed);
     settings.path_class = referenceClass(p);
     settings.progress = env.progress;
     reports::Convergence convergence;

@@ -1,5 +1,7 @@
 #include "realtime/atlas/atlas_mesh.h"
 
+#include "realtime/gpu_scene/gpu_scene.h"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -13,7 +15,7 @@ struct Vertex {
   std::uint32_t material;
   glm::vec2 uv;
 };
-static_assert(sizeof(Vertex) == 36, "Vertex must be tightly packed (attribute offsets below)");
+static_assert(sizeof(Vertex) == 36, "Vertex must be tightly packed");
 
 struct Corner {
   glm::vec3 position;
@@ -52,16 +54,12 @@ AtlasMesh::AtlasMesh(const std::vector<AtlasTriangle>& triangles, const AtlasLay
   }
   vertex_count_ = vertices.size();
   vertices_ = gl::Buffer::fromVector(vertices, 0);
+  setSceneVertexAttributes<Vertex>(vertex_array_, vertices_);
   const GLuint vao = vertex_array_.id();
-  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
-  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
-  glVertexArrayAttribIFormat(vao, 2, 1, GL_UNSIGNED_INT, offsetof(Vertex, material));
-  glVertexArrayAttribFormat(vao, 3, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv));
-  for (GLuint attribute = 0; attribute < 4; ++attribute) {
-    glVertexArrayAttribBinding(vao, attribute, 0);
-    glEnableVertexArrayAttrib(vao, attribute);
-  }
+  glVertexArrayAttribFormat(vao, gpu::kVertexAtlasUvLocation, 2, GL_FLOAT, GL_FALSE,
+                            offsetof(Vertex, uv));
+  glVertexArrayAttribBinding(vao, gpu::kVertexAtlasUvLocation, 0);
+  glEnableVertexArrayAttrib(vao, gpu::kVertexAtlasUvLocation);
 }
 
 void AtlasMesh::draw() const {

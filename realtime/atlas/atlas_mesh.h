@@ -4,8 +4,8 @@
 // interpolated), so the surfaces and the atlas stay the same and only the vertex count changes:
 // the hemispherical projection's accuracy and the cost of geometry passes depend on it.
 //
-// Vertex attributes (atlas/atlas_vertex.glsl): 0 position, 1 normal, 2 material as in
-// scene/vertex.glsl, and 3 the atlas coordinate in [0, 1]².
+// Vertex attributes (atlas/atlas_vertex.glsl): the scene's (gpu_scene/gpu_scene_shared.h) and
+// the atlas coordinate in [0, 1]² at kVertexAtlasUvLocation.
 #pragma once
 
 #include "realtime/atlas/atlas_layout.h"

@@ -1,5 +1,7 @@
 #include "realtime/atlas/atlas_textures.h"
 
+#include "realtime/gl/binding_plan_shared.h"
+
 #include <glm/vec4.hpp>
 
 namespace gib::rt::atlas {
@@ -38,10 +40,10 @@ AtlasTextures::AtlasTextures(const AtlasTexels& baked, const std::vector<AtlasTr
 }
 
 void AtlasTextures::bind() const {
-  position_.bind(kPositionUnit);
-  normal_.bind(kNormalUnit);
-  albedo_.bind(kAlbedoUnit);
-  emission_.bind(kEmissionUnit);
+  position_.bind(gpu::kAtlasPositionUnit);
+  normal_.bind(gpu::kAtlasNormalUnit);
+  albedo_.bind(gpu::kAtlasAlbedoUnit);
+  emission_.bind(gpu::kAtlasEmissionUnit);
 }
 
 }  // namespace gib::rt::atlas

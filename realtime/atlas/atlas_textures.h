@@ -7,12 +7,6 @@
 
 namespace gib::rt::atlas {
 
-// Texture units and GLSL names of atlas/atlas_maps.glsl.
-inline constexpr GLuint kPositionUnit = 8;   // xyz world sample point, w 1 inside a chart, else 0
-inline constexpr GLuint kNormalUnit = 9;     // xyz unit normal, w world area of the texel
-inline constexpr GLuint kAlbedoUnit = 10;    // rgb diffuse reflectance ρ
-inline constexpr GLuint kEmissionUnit = 11;  // rgb emitted radiance (front side)
-
 class AtlasTextures {
  public:
   AtlasTextures(const AtlasTexels& texels, const std::vector<AtlasTriangle>& triangles,
@@ -23,7 +17,7 @@ class AtlasTextures {
   const gl::Texture& normal() const { return normal_; }
   const gl::Texture& albedo() const { return albedo_; }
   const gl::Texture& emission() const { return emission_; }
-  // Binds the four maps to their units.
+  // Binds the four maps to their units of gl/binding_plan_shared.h (atlas_maps.glsl's names).
   void bind() const;
 
  private:

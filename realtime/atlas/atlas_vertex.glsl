@@ -1,4 +1,4 @@
 // The vertex attributes of AtlasMesh::draw (realtime/atlas/atlas_mesh.h): the scene's attributes
 // plus each vertex's atlas coordinate.
-#include "scene/vertex.glsl"
-layout(location = 3) in vec2 vertex_atlas_uv;  // [0, 1]², GL texel rows (y upwards)
+#include "realtime/gpu_scene/vertex.glsl"
+layout(location = kVertexAtlasUvLocation) in vec2 vertex_atlas_uv;  // [0, 1]², GL texel rows (y up)

@@ -1,4 +1,4 @@
-#include "scene/scene.glsl"
+#include "realtime/gpu_scene/scene.glsl"
 
 in vec3 world_position;
 flat in vec3 world_normal;

@@ -1,5 +1,5 @@
-#include "scene/scene.glsl"
-#include "scene/vertex.glsl"
+#include "realtime/gpu_scene/scene.glsl"
+#include "realtime/gpu_scene/vertex.glsl"
 
 #ifdef EXPLICIT_VIEW
 uniform mat4 u_view_projection;  // a view other than the camera's (GBuffer::renderViews)

@@ -32,7 +32,7 @@ class PassProfiler {
   // unit being timed, passes[0] of the record: "frame", or "iteration" for the steps of an
   // iterative technique.
   explicit PassProfiler(bool precise = false, int latency = 4,
-                        std::string_view root_name = "frame");
+                        std::string_view root_name = kFramePass);
 
   // Ends its pass when destroyed. A destructor must not throw, so a pass that ends while one
   // opened after it is still open is reported by endFrame (std::logic_error).

@@ -3,9 +3,14 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gib::rt {
+
+// The roots of a record's pass paths: what one measured unit is.
+inline constexpr std::string_view kFramePass = "frame";          // a frame (every technique)
+inline constexpr std::string_view kIterationPass = "iteration";  // a step of an iterative one
 
 // One named pass over the measured frames. A pass entered several times in a frame (a shadow
 // map per light sample) counts once per frame with the sum of its entries.

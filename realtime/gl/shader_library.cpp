@@ -8,15 +8,61 @@
 namespace gib::rt::gl {
 
 std::string_view glslFile(std::string_view path) {
-  for (const EmbeddedFile& file : embeddedGlslFiles())
-    if (file.path == path) return file.text;
-  throw ShaderError(
-      fmt::format("no embedded GLSL file '{}' (is it under realtime/ and named *.glsl?)", path));
+  if (const EmbeddedFile* file = findEmbeddedFile(embeddedShaderFiles(), path)) return file->text;
+  throw ShaderError(fmt::format(
+      "no embedded shader file '{}' (a path from the project root, of a *.glsl file under "
+      "realtime/ or a *_shared.h header under realtime/ or common/)",
+      path));
 }
 
 namespace {
 
 constexpr int kMaxIncludeDepth = 16;
+
+std::string_view trimmed(std::string_view row) {
+  const std::size_t first = row.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const std::size_t last = row.find_last_not_of(" \t\r");
+  return row.substr(first, last - first + 1);
+}
+
+bool isConditional(std::string_view directive) {
+  return directive.starts_with("#if");  // #if, #ifdef, #ifndef
+}
+
+// The C++ side of a shared header: `#ifdef __cplusplus` up to its `#else` or `#endif`, with the
+// conditionals nested inside it. GLSL sees what follows `#else`.
+class CppOnlyBlocks {
+ public:
+  // Whether `directive` (a trimmed line) is dropped from the GLSL text.
+  bool drops(std::string_view directive) {
+    if (depth_ == 0) {
+      if (directive == "#ifdef __cplusplus") {
+        depth_ = 1;
+        in_cpp_ = true;
+        return true;
+      }
+      return false;
+    }
+    if (isConditional(directive)) {
+      ++depth_;
+    } else if (directive.starts_with("#endif")) {
+      if (--depth_ == 0) {  // the block's own #endif
+        in_cpp_ = false;
+        return true;
+      }
+    } else if (depth_ == 1 && directive.starts_with("#else")) {
+      in_cpp_ = false;
+      return true;
+    }
+    return in_cpp_;
+  }
+  bool open() const { return depth_ > 0; }
+
+ private:
+  int depth_ = 0;  // conditionals open since `#ifdef __cplusplus`, itself included
+  bool in_cpp_ = false;
+};
 
 void expandInto(std::string_view path, const GlslLookup& lookup, ExpandedSource& out,
                 std::vector<std::string>& stack) {
@@ -30,27 +76,31 @@ void expandInto(std::string_view path, const GlslLookup& lookup, ExpandedSource&
   stack.emplace_back(path);
   const std::string_view text = lookup(path);
   int line = 0;
+  CppOnlyBlocks cpp_only;
   for (std::size_t start = 0; start < text.size();) {
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view row = text.substr(start, end - start);
     ++line;
     start = end + 1;
-    const std::size_t first = row.find_first_not_of(" \t");
-    if (first != std::string_view::npos && row.substr(first).starts_with("#include")) {
+    const std::string_view directive = trimmed(row);
+    if (cpp_only.drops(directive) || directive == "#pragma once") continue;
+    if (directive.starts_with("#include")) {
       const std::size_t open = row.find('"'), close = row.rfind('"');
       if (open == std::string_view::npos || close <= open)
         throw ShaderError(fmt::format("{}:{}: #include needs a quoted path", path, line));
       expandInto(row.substr(open + 1, close - open - 1), lookup, out, stack);
       continue;
     }
-    if (first != std::string_view::npos && row.substr(first).starts_with("#version"))
+    if (directive.starts_with("#version"))
       throw ShaderError(fmt::format(
           "{}:{}: leave out #version; every stage is compiled as 450 core", path, line));
     out.text.append(row);
     out.text += '\n';
     out.lines.push_back({number, line});
   }
+  if (cpp_only.open())
+    throw ShaderError(fmt::format("{}: `#ifdef __cplusplus` without its #endif", path));
   stack.pop_back();
 }
 
@@ -105,7 +155,7 @@ std::string translateInfoLog(std::string_view log, const ExpandedSource& source)
       if (origin.file == SourceLine::kDefinesFile)
         out += fmt::format("defines:{}", origin.line);
       else
-        out += fmt::format("realtime/{}:{}", source.files[std::size_t(origin.file)], origin.line);
+        out += fmt::format("{}:{}", source.files[std::size_t(origin.file)], origin.line);
     }
     copied = std::size_t(m.position(0) + m.length(0));
   }
@@ -138,7 +188,7 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
       std::string log(std::size_t(std::max(length, 1)), '\0');
       glGetShaderInfoLog(shader, length, nullptr, log.data());
       cleanup();
-      throw ShaderError(fmt::format("{} shader realtime/{} does not compile:\n{}",
+      throw ShaderError(fmt::format("{} shader {} does not compile:\n{}",
                                     stageName(stage.type), stage.path,
                                     translateInfoLog(log, source)));
     }
@@ -154,7 +204,7 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
     std::string log(std::size_t(std::max(length, 1)), '\0');
     glGetProgramInfoLog(program.id(), length, nullptr, log.data());
     std::string joined;
-    for (const std::string& n : names) joined += (joined.empty() ? "realtime/" : ", realtime/") + n;
+    for (const std::string& n : names) joined += (joined.empty() ? "" : ", ") + n;
     while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
     throw ShaderError(fmt::format("program ({}) does not link:\n{}", joined, log));
   }

@@ -3,13 +3,14 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace gib::rt::sh {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 // The area of the spherical projection of the cube-face rectangle from (0, 0) to (x, y) at
 // distance 1: atan2(x·y, √(x² + y² + 1)) (a standard identity), used by inclusion–exclusion.
@@ -18,7 +19,7 @@ double cornerArea(double x, double y) {
 }
 
 void checkBand(int band) {
-  if (band < 0 || band > kMaxBand)
+  if (band < 0 || band > kShMaxBand)
     throw std::invalid_argument("spherical harmonics band must be 0 to 3");
 }
 
@@ -50,7 +51,7 @@ double zonalFactor(int l, const std::function<double(double)>& lobe) {
 
 }  // namespace
 
-std::array<float, kMaxCoefficients> evaluateBasis(const glm::vec3& d) {
+std::array<float, kShMaxCoefficients> evaluateBasis(const glm::vec3& d) {
   const float x = d.x, y = d.y, z = d.z;
   return {0.282094792f,                             // l = 0
           0.488602512f * y,                         // l = 1, m = −1
@@ -106,7 +107,7 @@ double cubeTexelSolidAngle(int i, int j, int size) {
 
 std::vector<float> cubeProjectionWeights(int size, int band) {
   checkBand(band);
-  const int count = coefficientCount(band);
+  const int count = shCoefficientCount(band);
   std::vector<float> weights(std::size_t(6 * size * size * count));
   for (int face = 0; face < 6; ++face)
     for (int j = 0; j < size; ++j)
@@ -122,7 +123,7 @@ std::vector<float> cubeProjectionWeights(int size, int band) {
 std::vector<double> projectOnCube(const std::function<glm::dvec3(const glm::vec3&)>& radiance_rgb,
                                   int size, int band, int channel) {
   checkBand(band);
-  const int count = coefficientCount(band);
+  const int count = shCoefficientCount(band);
   std::vector<double> coefficients(std::size_t(count), 0.0);
   for (int face = 0; face < 6; ++face)
     for (int j = 0; j < size; ++j)
@@ -135,19 +136,19 @@ std::vector<double> projectOnCube(const std::function<glm::dvec3(const glm::vec3
   return coefficients;
 }
 
-std::array<float, kMaxBand + 1> lambertBandFactors() {
+std::array<float, kShMaxBand + 1> lambertBandFactors() {
   // Eq. 6 closed: ρ̂_l·√(4π/(2l+1)) = Â_l/π with Â = π, 2π/3, π/4, 0 (Ramamoorthi & Hanrahan
   // 2001). The OCR'd eq. 6 garbles the even-l case; this is its value.
   return {1.0f, 2.0f / 3.0f, 0.25f, 0.0f};
 }
 
-std::array<float, kMaxBand + 1> zonalBandFactors(const std::function<double(double)>& lobe) {
-  std::array<float, kMaxBand + 1> factors{};
-  for (int l = 0; l <= kMaxBand; ++l) factors[std::size_t(l)] = float(zonalFactor(l, lobe));
+std::array<float, kShMaxBand + 1> zonalBandFactors(const std::function<double(double)>& lobe) {
+  std::array<float, kShMaxBand + 1> factors{};
+  for (int l = 0; l <= kShMaxBand; ++l) factors[std::size_t(l)] = float(zonalFactor(l, lobe));
   return factors;
 }
 
-std::array<float, kMaxBand + 1> phongBandFactors(double exponent) {
+std::array<float, kShMaxBand + 1> phongBandFactors(double exponent) {
   if (!(exponent >= 0)) throw std::invalid_argument("Phong exponent must be 0 or more");
   return zonalBandFactors(
       [exponent](double c) { return (exponent + 1) / (2 * kPi) * std::pow(c, exponent); });

@@ -1,8 +1,8 @@
 // The real spherical harmonics basis of realtime/sh/spherical_harmonics.h, bands 0..3, in the
 // same order and with the same constants (tests/realtime/irradiance_volume_test.cpp compares).
-#define SH_MAX_COEFFICIENTS 16
+#include "realtime/sh/spherical_harmonics_shared.h"
 
-void shBasis(vec3 d, out float y[SH_MAX_COEFFICIENTS]) {
+void shBasis(vec3 d, out float y[kShMaxCoefficients]) {
   float x = d.x, yy = d.y, z = d.z;
   y[0] = 0.282094792;
   y[1] = 0.488602512 * yy;
@@ -20,9 +20,4 @@ void shBasis(vec3 d, out float y[SH_MAX_COEFFICIENTS]) {
   y[13] = 0.457045799 * x * (5.0 * z * z - 1.0);
   y[14] = 1.445305721 * z * (x * x - yy * yy);
   y[15] = 0.590043589 * x * (x * x - 3.0 * yy * yy);
-}
-
-// The band of coefficient index i (l² ≤ i < (l+1)²).
-int shBand(int i) {
-  return i < 1 ? 0 : i < 4 ? 1 : i < 9 ? 2 : 3;
 }

@@ -9,6 +9,8 @@
 // the Condon–Shortley phase (Sloan's convention; the paper's complex Y_l^m span the same space).
 #pragma once
 
+#include "realtime/sh/spherical_harmonics_shared.h"
+
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -17,16 +19,13 @@
 
 namespace gib::rt::sh {
 
-inline constexpr int kMaxBand = 3;
-inline constexpr int kMaxCoefficients = (kMaxBand + 1) * (kMaxBand + 1);
+// The expansion's size is shared with the shaders (spherical_harmonics_shared.h).
+using gpu::kShMaxBand;
+using gpu::kShMaxCoefficients;
+using gpu::shCoefficientCount;
 
-// Coefficients of bands 0..`band`: 4 for band 1, 9 for band 2 (the paper's), 16 for band 3.
-constexpr int coefficientCount(int band) {
-  return (band + 1) * (band + 1);
-}
-
-// Y_i(d) for i < kMaxCoefficients, d a unit vector.
-std::array<float, kMaxCoefficients> evaluateBasis(const glm::vec3& d);
+// Y_i(d) for i < kShMaxCoefficients, d a unit vector.
+std::array<float, kShMaxCoefficients> evaluateBasis(const glm::vec3& d);
 
 // Cube-map conventions of OpenGL (faces +x, −x, +y, −y, +z, −z; texel (i, j) with i along s and
 // j along t): the unit direction through the centre of a texel, and the texel's exact solid
@@ -45,10 +44,10 @@ std::vector<double> projectOnCube(const std::function<glm::dvec3(const glm::vec3
 // Σ_l factor_l Σ_m L_lm Y_lm(C). For a Lambert surface of unit albedo (eq. 6, C the normal) the
 // factors are Â_l/π: 1, 2/3, 1/4, 0; for a normalised Phong lobe (n+1)/(2π)·cosⁿ around the mirror
 // direction of unit reflectance (eq. 5), computed by quadrature (exact to float precision).
-std::array<float, kMaxBand + 1> lambertBandFactors();
+std::array<float, kShMaxBand + 1> lambertBandFactors();
 // Eq. 4's factors 2π ∫₀¹ lobe(cosθ) P_l(cosθ) d(cosθ) of any lobe around its axis (zero below the
 // horizon), by quadrature.
-std::array<float, kMaxBand + 1> zonalBandFactors(const std::function<double(double)>& lobe);
-std::array<float, kMaxBand + 1> phongBandFactors(double exponent);
+std::array<float, kShMaxBand + 1> zonalBandFactors(const std::function<double(double)>& lobe);
+std::array<float, kShMaxBand + 1> phongBandFactors(double exponent);
 
 }  // namespace gib::rt::sh

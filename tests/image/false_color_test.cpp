@@ -1,5 +1,7 @@
 #include "image/false_color.h"
 
+#include "common/luminance_shared.h"
+
 #include <gtest/gtest.h>
 
 namespace gib::image {
@@ -30,7 +32,8 @@ TEST(FalseColor, MagmaIsMonotonicInLuminance) {
   for (int i = 0; i <= 100; ++i) {
     float rgb[3];
     magmaSrgb(float(i) / 100.0f, rgb);
-    float y = 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
+    float y = float(kLuminanceRed) * rgb[0] + float(kLuminanceGreen) * rgb[1] +
+              float(kLuminanceBlue) * rgb[2];
     EXPECT_GT(y, previous);
     previous = y;
   }

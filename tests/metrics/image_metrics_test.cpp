@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace gib::metrics {
 namespace {
@@ -70,11 +71,11 @@ TEST(ImageMetrics, GaussianNoiseGivesItsVarianceAsMse) {
     ref::SampleStream random(3, i++, 0);
     // Box–Muller from two uniforms.
     double u1 = 1.0 - random.next(), u2 = random.next();
-    v += float(0.1 * std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2));
+    v += float(0.1 * std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2));
   }
   const double n = double(r.data().size());
   EXPECT_NEAR(computeMse(r, t).value, 0.01, 5 * 0.01 * std::sqrt(2 / n));
-  EXPECT_NEAR(computeMae(r, t).value, 0.1 * std::sqrt(2 / M_PI), 0.003);
+  EXPECT_NEAR(computeMae(r, t).value, 0.1 * std::sqrt(2 / std::numbers::pi), 0.003);
 }
 
 TEST(ImageMetrics, EnergyRatioIsTheRatioOfMeanLuminances) {

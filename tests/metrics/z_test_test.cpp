@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace gib::metrics {
 namespace {
@@ -15,7 +16,7 @@ constexpr double kStandardError = 0.05;  // of each per-pixel mean
 
 double gaussian(ref::SampleStream& random) {
   double u1 = 1.0 - random.next(), u2 = random.next();
-  return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
+  return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
 }
 
 // A per-pixel mean estimate of a smooth true image, with the given standard error and bias.

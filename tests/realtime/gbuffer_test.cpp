@@ -1,6 +1,6 @@
 // The G-buffer's contents are checked pixel by pixel against Embree in pixel_agreement_test.cpp;
 // this file covers the rest of its contract.
-#include "realtime/gbuffer.h"
+#include "realtime/gbuffer/gbuffer.h"
 
 #include "realtime/gl/pass_profiler.h"
 #include "scene/builtin_scenes.h"

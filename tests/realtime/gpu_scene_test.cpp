@@ -1,6 +1,6 @@
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 
-#include "realtime/gbuffer.h"
+#include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/objects.h"
 #include "realtime/gl/shader_library.h"
 #include "scene/builtin_scenes.h"
@@ -116,10 +116,11 @@ TEST_F(GlTest, ASceneWithoutMeshesUploadsAndDrawsNothing) {
     for (int x = 0; x < normal.width(); ++x) ASSERT_EQ(normal.pixel(x, y)[3], -1.0f);
 }
 
-// scene.glsl spells the bindings out again; a program that includes it must agree with C++.
+// scene.glsl takes its bindings from gpu_scene_shared.h: the program the driver built must report
+// the C++ values, so the shared header reaches GLSL intact.
 TEST_F(GlTest, SceneGlslBindingsAreTheCppOnes) {
-  const gl::Program program = gl::buildProgram({{GL_VERTEX_SHADER, "gbuffer/gbuffer.vert.glsl"},
-                                                {GL_FRAGMENT_SHADER, "gbuffer/gbuffer.frag.glsl"}});
+  const gl::Program program = gl::buildProgram({{GL_VERTEX_SHADER, "realtime/gbuffer/gbuffer.vert.glsl"},
+                                                {GL_FRAGMENT_SHADER, "realtime/gbuffer/gbuffer.frag.glsl"}});
   auto binding = [&](GLenum interface, const char* block) {
     const GLuint index = glGetProgramResourceIndex(program.id(), interface, block);
     EXPECT_NE(index, GL_INVALID_INDEX) << block;
@@ -128,8 +129,8 @@ TEST_F(GlTest, SceneGlslBindingsAreTheCppOnes) {
     glGetProgramResourceiv(program.id(), interface, index, 1, &property, 1, nullptr, &value);
     return GLuint(value);
   };
-  EXPECT_EQ(binding(GL_SHADER_STORAGE_BLOCK, "Materials"), kMaterialBinding);
-  EXPECT_EQ(binding(GL_UNIFORM_BLOCK, "Camera"), kCameraBinding);
+  EXPECT_EQ(binding(GL_SHADER_STORAGE_BLOCK, "Materials"), GLuint(gpu::kMaterialsBinding));
+  EXPECT_EQ(binding(GL_UNIFORM_BLOCK, "CameraBlock"), GLuint(gpu::kCameraBinding));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include "common/input_error.h"
 #include "metrics/image_metrics.h"
 #include "realtime/gl/shader_library.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/sh/spherical_harmonics.h"
 #include "realtime/technique_runner.h"
 #include "reference/progressive_renderer.h"
@@ -38,8 +38,8 @@ TEST_F(IrradianceVolumeGl, ProbeViewsLookAlongTheCubeTexelDirections) {
         for (int i = 0; i < grid.face; ++i) {
           ++checked;
           // readTexture puts the bottom row (j = 0 of a tile) last.
-          const float* p = position.pixel(grid.tileX(probe, face) + i,
-                                          grid.atlasHeight() - 1 - (grid.tileY(probe, face) + j));
+          const glm::ivec2 tile = grid.tileOrigin(probe, face);
+          const float* p = position.pixel(tile.x + i, grid.atlasHeight() - 1 - (tile.y + j));
           if (p[3] <= 0) continue;
           ++hits;
           const glm::vec3 seen =
@@ -54,22 +54,22 @@ TEST_F(IrradianceVolumeGl, ProbeViewsLookAlongTheCubeTexelDirections) {
 // A compute shader around irradiance_volume.glsl: the GLSL basis at given directions, and the
 // interpolated coefficients at given points.
 constexpr const char* kProbeShader = R"(
-#include "scene/scene.glsl"
-#include "techniques/irradiance_volume/irradiance_volume.glsl"
+#include "realtime/gpu_scene/scene.glsl"
+#include "realtime/techniques/irradiance_volume/irradiance_volume.glsl"
 layout(local_size_x = 1) in;
-layout(std430, binding = 6) buffer Queries { vec4 queries[]; };
-layout(std430, binding = 7) buffer Results { vec4 results[]; };
+layout(std430, binding = kTestFirstStorageBinding) buffer Queries { vec4 queries[]; };
+layout(std430, binding = kTestFirstStorageBinding + 1) buffer Results { vec4 results[]; };
 uniform int u_basis;
 void main() {
   int q = int(gl_WorkGroupID.x);
   if (u_basis == 1) {
-    float y[SH_MAX_COEFFICIENTS];
+    float y[kShMaxCoefficients];
     shBasis(normalize(queries[q].xyz), y);
-    for (int i = 0; i < SH_MAX_COEFFICIENTS; ++i) results[q * SH_MAX_COEFFICIENTS + i] = vec4(y[i]);
+    for (int i = 0; i < kShMaxCoefficients; ++i) results[q * kShMaxCoefficients + i] = vec4(y[i]);
   } else {
-    vec3 L[SH_MAX_COEFFICIENTS];
+    vec3 L[kShMaxCoefficients];
     interpolateCoefficients(queries[q].xyz, L);
-    for (int i = 0; i < SH_MAX_COEFFICIENTS; ++i) results[q * SH_MAX_COEFFICIENTS + i] = vec4(L[i], 0.0);
+    for (int i = 0; i < kShMaxCoefficients; ++i) results[q * kShMaxCoefficients + i] = vec4(L[i], 0.0);
   }
 }
 )";
@@ -77,10 +77,10 @@ void main() {
 std::vector<glm::vec4> runProbeShader(const gl::Program& program,
                                       const std::vector<glm::vec4>& queries, bool basis) {
   const gl::Buffer query_buffer = gl::Buffer::fromVector(queries);
-  std::vector<glm::vec4> results(queries.size() * sh::kMaxCoefficients);
+  std::vector<glm::vec4> results(queries.size() * sh::kShMaxCoefficients);
   const gl::Buffer result_buffer = gl::Buffer::fromVector(results);
-  query_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
-  result_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  query_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTestFirstStorageBinding);
+  result_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTestFirstStorageBinding + 1);
   program.use();
   glUniform1i(program.uniform("u_basis"), basis ? 1 : 0);
   glDispatchCompute(GLuint(queries.size()), 1, 1);
@@ -101,21 +101,21 @@ TEST_F(IrradianceVolumeGl, GlslBasisAndInterpolationAgreeWithTheCpuAndAreExactAt
   const std::vector<glm::vec4> basis = runProbeShader(program, directions, true);
   for (std::size_t q = 0; q < directions.size(); ++q) {
     const auto expected = sh::evaluateBasis(glm::normalize(glm::vec3(directions[q])));
-    for (int i = 0; i < sh::kMaxCoefficients; ++i)
-      EXPECT_NEAR(basis[q * sh::kMaxCoefficients + std::size_t(i)].x, expected[std::size_t(i)],
+    for (int i = 0; i < sh::kShMaxCoefficients; ++i)
+      EXPECT_NEAR(basis[q * sh::kShMaxCoefficients + std::size_t(i)].x, expected[std::size_t(i)],
                   1e-5)
           << q << " " << i;
   }
   // Interpolation: each probe's coefficients are distinct; at a probe they come back exactly,
   // halfway between two probes they are the mean.
   const ProbeGrid grid = makeProbeGrid({0, 0, 0}, {3, 3, 3}, 3, 4, 1 << 20);
-  std::vector<glm::vec4> coefficients(std::size_t(grid.probeCount()) * sh::kMaxCoefficients);
+  std::vector<glm::vec4> coefficients(std::size_t(grid.probeCount()) * sh::kShMaxCoefficients);
   for (std::size_t i = 0; i < coefficients.size(); ++i)
     coefficients[i] = glm::vec4(float(i), float(i % 7), -float(i % 5), 0);
   const gl::Buffer buffer = gl::Buffer::fromVector(coefficients);
-  buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  buffer.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProbeCoefficientsBinding);
   const gl::Buffer phong = gl::Buffer::fromVector(std::vector<float>(4, 0.0f));
-  phong.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  phong.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPhongFactorsBinding);
   const GLuint id = program.id();
   glProgramUniform1i(id, program.uniform("u_grid_n"), grid.n);
   glProgramUniform3fv(id, program.uniform("u_grid_origin"), 1, glm::value_ptr(grid.origin));
@@ -129,13 +129,14 @@ TEST_F(IrradianceVolumeGl, GlslBasisAndInterpolationAgreeWithTheCpuAndAreExactAt
   const std::vector<glm::vec4> interpolated = runProbeShader(program, points, false);
   for (int probe = 0; probe < grid.probeCount(); ++probe)
     for (int i = 0; i < 9; ++i) {
-      const glm::vec4 got = interpolated[std::size_t(probe * sh::kMaxCoefficients + i)];
-      const glm::vec4 want = coefficients[std::size_t(probe * sh::kMaxCoefficients + i)];
+      const glm::vec4 got = interpolated[std::size_t(probe * sh::kShMaxCoefficients + i)];
+      const glm::vec4 want = coefficients[std::size_t(gpu::probeCoefficientIndex(probe, i))];
       EXPECT_NEAR(got.x, want.x, 1e-3f * (1 + std::abs(want.x))) << probe << " " << i;
       EXPECT_NEAR(got.y, want.y, 1e-4f) << probe << " " << i;
     }
-  const std::size_t mid = std::size_t(grid.probeCount()) * sh::kMaxCoefficients;
-  EXPECT_NEAR(interpolated[mid].x, 0.5f * (coefficients[0].x + coefficients[16].x), 1e-3f);
+  const std::size_t mid = std::size_t(grid.probeCount()) * sh::kShMaxCoefficients;
+  const std::size_t second = std::size_t(gpu::probeCoefficientIndex(1, 0));
+  EXPECT_NEAR(interpolated[mid].x, 0.5f * (coefficients[0].x + coefficients[second].x), 1e-3f);
 }
 
 TechniqueRunSettings smallRun() {

@@ -1,6 +1,6 @@
 // The light samples of `direct`: every light type turned into point and directional samples that
 // carry the light's whole power, deterministically.
-#include "realtime/techniques/direct/light_samples.h"
+#include "realtime/lighting/light_samples.h"
 
 #include "scene/builtin_scenes.h"
 

@@ -3,8 +3,8 @@
 // with GL agree with Embree's primary rays through the pixel centres everywhere but at
 // silhouettes, where the rasteriser's and the ray tracer's edge rules may pick different
 // triangles. A control shifts the rays by half a pixel to show that the comparison can fail.
-#include "realtime/gbuffer.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gbuffer/gbuffer.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "reference/embree_scene.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"

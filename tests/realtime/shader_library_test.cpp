@@ -50,6 +50,34 @@ TEST(ShaderLibrary, IncludesAFileOnce) {
   EXPECT_EQ(out.text.find("const float PI", first + 1), std::string::npos) << out.text;
 }
 
+// A header shared with C++ (`*_shared.h`): GLSL gets what is outside `#ifdef __cplusplus` and
+// what follows its `#else`, with conditionals nested on either side, and no `#pragma once`.
+TEST(ShaderLibrary, ReadsTheGlslSideOfASharedHeader) {
+  const GlslLookup sources = glslSources(
+      {{"main.glsl", "#include \"x_shared.h\"\nvoid main() {}\n"},
+       {"x_shared.h",
+        "#pragma once\n#ifdef __cplusplus\n#include <glm/vec3.hpp>\n#if 1\nnamespace a {\n#else\n"
+        "#endif\n#else\n#define GLSL_ONLY 1\n#ifdef N\nfloat n;\n#endif\n#endif\n"
+        "const int kShared = 2;\n#ifdef __cplusplus\n}\n#endif\n"}});
+  const ExpandedSource out = expandIncludes("main.glsl", "", sources);
+  EXPECT_EQ(out.text,
+            "#version 450 core\n"
+            "#define GLSL_ONLY 1\n"
+            "#ifdef N\n"
+            "float n;\n"
+            "#endif\n"
+            "const int kShared = 2;\n"
+            "void main() {}\n");
+  // Kept lines still map to their own lines of the header.
+  EXPECT_EQ(out.lines[1], (SourceLine{1, 9}));
+  EXPECT_EQ(out.lines[5], (SourceLine{1, 14}));
+}
+
+TEST(ShaderLibrary, AnUnclosedCppBlockIsAShaderError) {
+  const GlslLookup sources = glslSources({{"y_shared.h", "#ifdef __cplusplus\nnamespace a {\n"}});
+  EXPECT_THROW(expandIncludes("y_shared.h", "", sources), ShaderError);
+}
+
 TEST(ShaderLibrary, AnIncludeCycleIsAShaderError) {
   const GlslLookup sources =
       glslSources({{"a.glsl", "#include \"b.glsl\"\n"}, {"b.glsl", "#include \"a.glsl\"\n"}});
@@ -79,12 +107,12 @@ TEST(ShaderLibrary, TranslatesMesaAndNvidiaInfoLogLocations) {
   const ExpandedSource source =
       expandIncludes("main.frag.glsl", "#define A 1\n#define B 2\n", sources);
   EXPECT_EQ(translateInfoLog("0:5(12): error: `x' undeclared\n", source),
-            "realtime/lib/common.glsl:2: error: `x' undeclared");
+            "lib/common.glsl:2: error: `x' undeclared");
   EXPECT_EQ(translateInfoLog("0(5) : error C1008: undefined variable \"x\"", source),
-            "realtime/lib/common.glsl:2 : error C1008: undefined variable \"x\"");
+            "lib/common.glsl:2 : error C1008: undefined variable \"x\"");
   // Mesa sometimes names another source string; the line alone decides.
   EXPECT_EQ(translateInfoLog("1:7(1): error: a\n0:6(2): warning: b\n", source),
-            "realtime/main.frag.glsl:2: error: a\nrealtime/lib/common.glsl:3: warning: b");
+            "main.frag.glsl:2: error: a\nlib/common.glsl:3: warning: b");
   EXPECT_EQ(translateInfoLog("0:3(1): error: c", source), "defines:2: error: c");
   EXPECT_EQ(translateInfoLog("0:99(1): error: d", source), "?:99: error: d");
   EXPECT_EQ(translateInfoLog("no location here", source), "no location here");
@@ -127,8 +155,8 @@ TEST_F(ShaderBuild, BuildsAProgramFromInMemorySourcesWithDefines) {
 TEST_F(ShaderBuild, ACompileErrorInAnIncludedFileNamesThatFileAndLine) {
   const std::string error = buildError({{GL_VERTEX_SHADER, "test/fullscreen.vert.glsl"},
                                         {GL_FRAGMENT_SHADER, "test/includes_broken.frag.glsl"}});
-  EXPECT_TRUE(contains(error, "fragment shader realtime/test/includes_broken.frag.glsl")) << error;
-  EXPECT_TRUE(contains(error, "realtime/test/broken_lib.glsl:3")) << error;
+  EXPECT_TRUE(contains(error, "fragment shader test/includes_broken.frag.glsl")) << error;
+  EXPECT_TRUE(contains(error, "test/broken_lib.glsl:3")) << error;
   EXPECT_FALSE(contains(error, "includes_broken.frag.glsl:3")) << error;  // Mesa's source 0
 }
 
@@ -136,7 +164,7 @@ TEST_F(ShaderBuild, ACompileErrorAfterAnIncludeHasTheLineOfItsOwnFile) {
   const std::string error =
       buildError({{GL_VERTEX_SHADER, "test/fullscreen.vert.glsl"},
                   {GL_FRAGMENT_SHADER, "test/broken_after_include.frag.glsl"}});
-  EXPECT_TRUE(contains(error, "realtime/test/broken_after_include.frag.glsl:4")) << error;
+  EXPECT_TRUE(contains(error, "test/broken_after_include.frag.glsl:4")) << error;
 }
 
 TEST_F(ShaderBuild, AnErrorInTheDefinesNamesTheirLine) {
@@ -154,7 +182,7 @@ TEST_F(ShaderBuild, ALinkErrorNamesTheStages) {
   const std::string error = buildError({{GL_VERTEX_SHADER, "test/fullscreen.vert.glsl"},
                                         {GL_FRAGMENT_SHADER, "test/no_main.frag.glsl"}});
   EXPECT_TRUE(contains(error, "does not link")) << error;
-  EXPECT_TRUE(contains(error, "realtime/test/no_main.frag.glsl")) << error;
+  EXPECT_TRUE(contains(error, "test/no_main.frag.glsl")) << error;
 }
 
 }  // namespace

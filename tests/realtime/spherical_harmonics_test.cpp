@@ -7,11 +7,12 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <numbers>
 
 namespace gib::rt::sh {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 TEST(SphericalHarmonics, CubeTexelSolidAnglesCoverTheSphere) {
   for (int size : {1, 8, 16}) {
@@ -28,11 +29,11 @@ TEST(SphericalHarmonics, CubeTexelSolidAnglesCoverTheSphere) {
 TEST(SphericalHarmonics, BasisIsOrthonormalUnderCubeQuadrature) {
   // ∫ Y_a Y_b dω by eq. 2's weights on 64² faces: δ_ab within the quadrature's error.
   const int size = 64;
-  for (int a = 0; a < kMaxCoefficients; ++a)
-    for (int b = a; b < kMaxCoefficients; ++b) {
+  for (int a = 0; a < kShMaxCoefficients; ++a)
+    for (int b = a; b < kShMaxCoefficients; ++b) {
       const std::vector<double> c = projectOnCube(
           [&](const glm::vec3& d) { return glm::dvec3(evaluateBasis(d)[std::size_t(b)]); }, size,
-          kMaxBand, 0);
+          kShMaxBand, 0);
       EXPECT_NEAR(c[std::size_t(a)], a == b ? 1.0 : 0.0, 2e-3) << a << "," << b;
     }
 }
@@ -47,7 +48,7 @@ TEST(SphericalHarmonics, ProjectionRecoversAConstantAndAClampedCosine) {
   // every m ≠ 0 vanishes by symmetry (Ramamoorthi & Hanrahan 2001).
   const std::vector<double> lobe =
       projectOnCube([](const glm::vec3& d) { return glm::dvec3(std::max(0.0f, d.z)); }, 64, 3, 1);
-  const double expected[kMaxCoefficients] = {std::sqrt(kPi) / 2,
+  const double expected[kShMaxCoefficients] = {std::sqrt(kPi) / 2,
                                              0,
                                              std::sqrt(kPi / 3),
                                              0,
@@ -67,7 +68,7 @@ TEST(SphericalHarmonics, ProjectionRecoversAConstantAndAClampedCosine) {
 }
 
 TEST(SphericalHarmonics, ProjectionWeightsAreTheBasisTimesSolidAngle) {
-  const int size = 4, band = 2, count = coefficientCount(band);
+  const int size = 4, band = 2, count = shCoefficientCount(band);
   const std::vector<float> weights = cubeProjectionWeights(size, band);
   ASSERT_EQ(weights.size(), std::size_t(6 * size * size * count));
   const int face = 3, i = 1, j = 2;
@@ -86,7 +87,7 @@ TEST(SphericalHarmonics, LambertTransferOfAConstantEnvironmentIsAlbedoTimesRadia
   for (const glm::vec3 normal : {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(1, -2, 0.5f))}) {
     const auto y = evaluateBasis(normal);
     double reflected = 0;
-    for (int i = 0; i < coefficientCount(2); ++i)
+    for (int i = 0; i < shCoefficientCount(2); ++i)
       reflected += albedo *
                    factors[i < 1   ? 0
                            : i < 4 ? 1
@@ -100,7 +101,7 @@ TEST(SphericalHarmonics, ZonalFactorsMatchEquationSixAndNarrowPhongLobes) {
   // Eq. 6's closed form is the quadrature of the Lambert lobe cos θ/π.
   const auto quadrature = zonalBandFactors([](double c) { return c / kPi; });
   const auto closed = lambertBandFactors();
-  for (int l = 0; l <= kMaxBand; ++l) EXPECT_NEAR(quadrature[l], closed[l], 1e-6) << l;
+  for (int l = 0; l <= kShMaxBand; ++l) EXPECT_NEAR(quadrature[l], closed[l], 1e-6) << l;
   // A normalised lobe keeps its energy (band 0 factor 1); as it narrows it passes every band.
   for (double n : {0.0, 1.0, 10.0, 100.0}) EXPECT_NEAR(phongBandFactors(n)[0], 1.0, 1e-5) << n;
   EXPECT_GT(phongBandFactors(2000)[3], 0.98f);

@@ -4,7 +4,7 @@
 
 #include "metrics/image_metrics.h"
 #include "realtime/gl/pass_profiler.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/technique_runner.h"
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"

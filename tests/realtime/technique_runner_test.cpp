@@ -41,9 +41,16 @@ class CountingTechnique final : public Technique {
 };
 
 TechniqueInfo countingInfo() {
-  return {"counting", "counts its steps", "a test", {}, [](const ParameterValues&) {
-            return std::make_unique<CountingTechnique>();
-          }};
+  TechniqueInfo info;
+  info.name = "counting";
+  info.description = "counts its steps";
+  info.source = "a test";
+  info.passes.add("frame/show", "the counter as a grey level")
+      .add("iteration", "one step")
+      .add("iteration/select", "the first pass of a step")
+      .add("iteration/update", "the second");
+  info.create = [](const ParameterValues&) { return std::make_unique<CountingTechnique>(); };
+  return info;
 }
 
 TechniqueRunSettings settings(int iterations, std::vector<int> capture_after) {
@@ -90,6 +97,22 @@ TEST(TechniqueRunner, TimesEachIterationAndCapturesImagesOnTheWay) {
   EXPECT_EQ(r.auxiliary[0].image.pixel(1, 0)[0], 5.0f);  // after the last step
   ASSERT_EQ(r.statistics.size(), 1u);
   EXPECT_EQ(r.statistics[0].value, 2);
+}
+
+// A pass the technique does not declare would be one that no suite can name and no README lists.
+TEST(TechniqueRunner, RefusesAProfileWithAnUndeclaredPass) {
+  const scene::Scene scene = scene::loadScene("cornell");
+  TechniqueInfo info = countingInfo();
+  info.passes = PassDeclarations();
+  info.passes.add("frame/show", "declared").add("iteration", "declared");
+  info.passes.add("iteration/select", "declared");  // but not iteration/update
+  const ParameterValues none = parseParameters(info.parameters, {}, "technique 'counting'");
+  try {
+    runTechnique(scene, info, none, settings(1, {}));
+    FAIL() << "expected std::logic_error";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'iteration/update'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(TechniqueRunner, RefusesCapturesBeyondOrOutOfOrder) {

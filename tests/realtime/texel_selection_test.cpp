@@ -43,7 +43,7 @@ std::vector<double> selectionCounts(SelectionMethod method, const std::vector<fl
   double total = 0;
   for (float p : power) total += p;
   std::vector<double> counts(power.size(), 0.0);
-  for (const SelectedTexel& s : selection.readSelections(kSelections)) {
+  for (const gpu::Shooter& s : selection.readSelections(kSelections)) {
     const std::size_t i = std::size_t(s.texel.y * kResolution + s.texel.x);
     EXPECT_TRUE(s.texel.x >= 0 && s.texel.y >= 0 && s.texel.x < kResolution &&
                 s.texel.y < kResolution);

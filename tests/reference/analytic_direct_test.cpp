@@ -9,12 +9,13 @@
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
+#include <numbers>
 
 namespace gib::ref {
 namespace {
 
 constexpr float kAlbedo = 0.5f;
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 // A 40 × 40 floor at y = 0 facing up; nothing else unless a test adds it.
 scene::Scene makeFloorScene() {

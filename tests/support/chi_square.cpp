@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace gib::test {
@@ -20,8 +21,8 @@ int binOf(const glm::vec3& w) {
   double cos_theta = std::clamp(double(w.z), -1.0, 1.0);
   int i = std::min(int((cos_theta + 1.0) * 0.5 * kCosThetaBins), kCosThetaBins - 1);
   double phi = std::atan2(double(w.y), double(w.x));
-  if (phi < 0) phi += 2 * M_PI;
-  int j = std::min(int(phi / (2 * M_PI) * kPhiBins), kPhiBins - 1);
+  if (phi < 0) phi += 2 * std::numbers::pi;
+  int j = std::min(int(phi / (2 * std::numbers::pi) * kPhiBins), kPhiBins - 1);
   return i * kPhiBins + j;
 }
 
@@ -33,7 +34,7 @@ std::vector<double> expectedProbabilities(const DirectionPdf& pdf) {
   constexpr int kSubPhi = 12;
   std::vector<double> p(kCosThetaBins * kPhiBins, 0.0);
   const double dz = 2.0 / kCosThetaBins / kSubZ;
-  const double dphi = 2 * M_PI / kPhiBins / kSubPhi;
+  const double dphi = 2 * std::numbers::pi / kPhiBins / kSubPhi;
   for (int i = 0; i < kCosThetaBins * kSubZ; ++i)
     for (int j = 0; j < kPhiBins * kSubPhi; ++j) {
       double z = -1.0 + (i + 0.5) * dz;

@@ -5,7 +5,7 @@
 #include "realtime/gl/finished_time.h"
 #include "realtime/gl/gl.h"
 #include "realtime/gl/pass_profiler.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
 #include "realtime/technique.h"
 #include "scene/builtin_scenes.h"

@@ -2,14 +2,14 @@
 // with shadow maps (book Ch. 4): hard, percentage-closer filtered or variance shadow maps; area
 // lights and the sky as many light samples, a shadow map each, so that the image converges to the
 // exact direct illumination as the sample count grows. Deferred: one g-buffer pass, then per
-// light sample a shadow map and a full-screen shading pass added into the frame.
+// light sample a shadow map and a full-screen shading pass added into the frame. The lighting
+// itself is the shared realtime/lighting/ block; see README.md beside this file.
 #pragma once
 
-#include "realtime/gbuffer.h"
+#include "realtime/gbuffer/gbuffer.h"
+#include "realtime/lighting/direct_lighting.h"
 #include "realtime/technique.h"
-#include "realtime/techniques/direct/direct_lighting.h"
 
-#include <memory>
 #include <optional>
 
 namespace gib::rt {
@@ -29,11 +29,6 @@ class DirectTechnique final : public Technique {
   const GpuScene* scene_ = nullptr;
   std::optional<GBuffer> gbuffer_;
 };
-
-// The shadow-map parameters of `direct` (filter, sizes, light samples), shared by the techniques
-// that add direct light the same way, and the settings they give.
-ParameterTable directLightingParameters();
-ShadowSettings shadowSettings(const ParameterValues& values);
 
 TechniqueInfo directTechniqueInfo();
 

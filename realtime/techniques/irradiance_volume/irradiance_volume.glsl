@@ -3,19 +3,16 @@
 // and the reflected radiance through eq. 4's zonal transfer factors. Coefficients live in a
 // storage buffer and are interpolated here rather than by 3D-texture hardware, because §6's
 // indirect shadows weight the eight probes by their visibility, which hardware filtering cannot.
-#include "sh/spherical_harmonics.glsl"
+#include "realtime/sh/spherical_harmonics.glsl"
+#include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
 
-#define kCoefficientBinding 2
-#define kPhongFactorBinding 3
-#define kProbeDistanceUnit 4
-
-layout(std430, binding = kCoefficientBinding) readonly buffer Coefficients {
-  vec4 coefficients[];  // [probe · 16 + i]: rgb of coefficient i
+layout(std430, binding = kProbeCoefficientsBinding) readonly buffer Coefficients {
+  vec4 coefficients[];  // [probeCoefficientIndex(probe, i)]: rgb of coefficient i
 };
-layout(std430, binding = kPhongFactorBinding) readonly buffer PhongFactors {
+layout(std430, binding = kPhongFactorsBinding) readonly buffer PhongFactors {
   vec4 phong_factors[];  // per material: eq. 4's band factors of its Phong lobe, bands 0..3
 };
-layout(binding = kProbeDistanceUnit) uniform sampler2D u_probe_position;  // w: distance to probe
+layout(binding = kProbePositionUnit) uniform sampler2D u_probe_position;  // w: distance to probe
 
 uniform int u_grid_n;
 uniform vec3 u_grid_origin;
@@ -51,8 +48,7 @@ float probeDistance(int probe, vec3 d) {
     st = vec2(d.z > 0.0 ? d.x : -d.x, -d.y) / a.z;
   }
   ivec2 texel = clamp(ivec2((st * 0.5 + 0.5) * float(u_face)), ivec2(0), ivec2(u_face - 1));
-  int tile = probe * 6 + face;
-  ivec2 origin = ivec2(tile % u_tiles_x, tile / u_tiles_x) * u_face;
+  ivec2 origin = tileOrigin(probeTile(probe, face), u_tiles_x, u_face);
   return texelFetch(u_probe_position, origin + texel, 0).w;
 }
 
@@ -60,7 +56,7 @@ float probeDistance(int probe, vec3 d) {
 // at the grid's outer half cells), each multiplied, with indirect shadows, by whether the probe's
 // cube map sees p (its recorded distance towards p is not shorter than p's, up to a tolerance of
 // a tenth of a cell), and renormalised. Without a visible probe the plain weights stand.
-void interpolateCoefficients(vec3 p, out vec3 L[SH_MAX_COEFFICIENTS]) {
+void interpolateCoefficients(vec3 p, out vec3 L[kShMaxCoefficients]) {
   vec3 g = clamp((p - u_grid_origin) / u_grid_cell - 0.5, vec3(0.0), vec3(float(u_grid_n - 1)));
   ivec3 base = min(ivec3(floor(g)), ivec3(u_grid_n - 2));
   if (u_grid_n == 1) base = ivec3(0);
@@ -91,18 +87,18 @@ void interpolateCoefficients(vec3 p, out vec3 L[SH_MAX_COEFFICIENTS]) {
       total = visible_total;
     }
   }
-  for (int i = 0; i < SH_MAX_COEFFICIENTS; ++i) L[i] = vec3(0.0);
+  for (int i = 0; i < kShMaxCoefficients; ++i) L[i] = vec3(0.0);
   for (int corner = 0; corner < 8; ++corner) {
     float w = weights[corner] / total;
     if (w == 0.0) continue;
     for (int i = 0; i < u_coefficient_count; ++i)
-      L[i] += w * coefficients[probes[corner] * SH_MAX_COEFFICIENTS + i].rgb;
+      L[i] += w * coefficients[probeCoefficientIndex(probes[corner], i)].rgb;
   }
 }
 
 // Eq. 4: Σ_l factor_l Σ_m L_lm Y_lm(axis).
-vec3 zonalTransfer(vec3 L[SH_MAX_COEFFICIENTS], vec3 axis, vec4 factors) {
-  float y[SH_MAX_COEFFICIENTS];
+vec3 zonalTransfer(vec3 L[kShMaxCoefficients], vec3 axis, vec4 factors) {
+  float y[kShMaxCoefficients];
   shBasis(axis, y);
   vec3 result = vec3(0.0);
   for (int i = 0; i < u_coefficient_count; ++i) result += factors[shBand(i)] * y[i] * L[i];

@@ -4,13 +4,14 @@
 #include "realtime/gl/shader_library.h"
 #include "realtime/render_target.h"
 #include "realtime/sh/spherical_harmonics.h"
-#include "realtime/techniques/direct/direct_technique.h"
+#include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 namespace gib::rt {
 
@@ -26,7 +27,7 @@ void setGridUniforms(const gl::Program& program, const ProbeGrid& grid, int coun
   glProgramUniform3fv(id, program.uniform("u_grid_origin"), 1, glm::value_ptr(grid.origin));
   glProgramUniform3fv(id, program.uniform("u_grid_cell"), 1, glm::value_ptr(grid.cell));
   glProgramUniform1i(id, program.uniform("u_coefficient_count"), count);
-  const std::array<float, sh::kMaxBand + 1> lambert = sh::lambertBandFactors();
+  const std::array<float, sh::kShMaxBand + 1> lambert = sh::lambertBandFactors();
   glProgramUniform4fv(id, program.uniform("u_lambert_factors"), 1, lambert.data());
   glProgramUniform1i(id, program.uniform("u_indirect_shadows"), indirect_shadows ? 1 : 0);
   glProgramUniform1i(id, program.uniform("u_face"), grid.face);
@@ -59,28 +60,28 @@ void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int he
   probe_lit_.emplace(grid_.atlasWidth(), grid_.atlasHeight());
   lighting_.prepare(scene);
 
-  const int count = sh::coefficientCount(band_);
-  coefficients_ = gl::Buffer(std::size_t(grid_.probeCount()) * sh::kMaxCoefficients * 16, nullptr);
+  const int count = sh::shCoefficientCount(band_);
+  coefficients_ = gl::Buffer(std::size_t(gpu::probeCoefficientIndex(grid_.probeCount(), 0)) *
+                                 sizeof(glm::vec4),
+                             nullptr);
   weights_ = gl::Buffer::fromVector(sh::cubeProjectionWeights(face_, band_));
   std::vector<float> phong;  // per material, bands 0..3
   for (const scene::Material& m : scene.scene().materials) {
     const auto factors = m.type == scene::MaterialType::kPhong
                              ? sh::phongBandFactors(m.exponent)
-                             : std::array<float, sh::kMaxBand + 1>{};
+                             : std::array<float, sh::kShMaxBand + 1>{};
     phong.insert(phong.end(), factors.begin(), factors.end());
   }
   if (phong.empty()) phong.assign(4, 0.0f);
   phong_factors_ = gl::Buffer::fromVector(phong);
 
   project_ = gl::buildProgram(
-      {{GL_COMPUTE_SHADER, "techniques/irradiance_volume/sh_projection.comp.glsl"}});
+      {{GL_COMPUTE_SHADER, "realtime/techniques/irradiance_volume/sh_projection.comp.glsl"}});
   glProgramUniform1i(project_.id(), project_.uniform("u_face"), grid_.face);
   glProgramUniform1i(project_.id(), project_.uniform("u_tiles_x"), grid_.tiles_x);
   glProgramUniform1i(project_.id(), project_.uniform("u_coefficient_count"), count);
-  indirect_ =
-      gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
-                        {GL_FRAGMENT_SHADER, "techniques/irradiance_volume/indirect.frag.glsl"}});
-  setGridUniforms(indirect_, grid_, count, indirect_shadows_);
+  indirect_ = gl::FullScreenPass("realtime/techniques/irradiance_volume/indirect.frag.glsl");
+  setGridUniforms(indirect_.program(), grid_, count, indirect_shadows_);
   rasterised_ = false;
 }
 
@@ -91,9 +92,9 @@ void IrradianceVolumeTechnique::rasteriseProbes() {
 
 void IrradianceVolumeTechnique::project(const RenderTarget& lit) {
   project_.use();
-  lit.color().bind(0);
-  coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-  weights_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  lit.color().bind(gpu::kProbeRadianceUnit);
+  coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProbeCoefficientsBinding);
+  weights_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProjectionWeightsBinding);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   glDispatchCompute(GLuint(grid_.probeCount()), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -103,17 +104,16 @@ void IrradianceVolumeTechnique::addIndirect(const GBuffer& gbuffer, const Render
                                             bool probe_view) {
   scene_->bindSceneBuffers();
   indirect_.use();
-  glUniform1i(indirect_.uniform("u_normals_face_viewer"), probe_view ? 1 : 0);
-  gbuffer.bindTextures(0);
-  probe_gbuffer_->position().bind(4);
-  coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-  phong_factors_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  glUniform1i(indirect_.program().uniform("u_normals_face_viewer"), probe_view ? 1 : 0);
+  gbuffer.bindTextures();
+  probe_gbuffer_->position().bind(gpu::kProbePositionUnit);
+  coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProbeCoefficientsBinding);
+  phong_factors_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPhongFactorsBinding);
   target.bind();
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  empty_vertex_array_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  indirect_.draw();
   glDisable(GL_BLEND);
 }
 
@@ -122,13 +122,13 @@ void IrradianceVolumeTechnique::bounce(gl::PassProfiler& profiler,
   const RenderTarget* lit = &*probe_direct_;
   for (int b = 1; b <= bounces_; ++b) {
     {
-      auto pass = profiler.pass("sh projection");
+      auto pass = profiler.pass(kShProjectionPass);
       project(*lit);
     }
     if (after_bounce) after_bounce(b);
     if (b == bounces_) break;
     // The next bounce sees direct light plus this bounce's indirect light at the probes' surfaces.
-    auto pass = profiler.pass("relight cube maps");
+    auto pass = profiler.pass(kRelightProbesPass);
     glCopyImageSubData(probe_direct_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        probe_lit_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, grid_.atlasWidth(),
                        grid_.atlasHeight(), 1);
@@ -142,7 +142,8 @@ void IrradianceVolumeTechnique::bounce(gl::PassProfiler& profiler,
 // for a moving light, and the measured image is the scene's.
 glm::vec3 IrradianceVolumeTechnique::lightOffset(const Frame& frame) const {
   if (rasterise_every_frame_ || frame.frames_left == 0) return glm::vec3(0.0f);
-  const float phase = 6.2831853f * float(frame.frames_left) / float(frame.frame_count);
+  const float phase =
+      2.0f * std::numbers::pi_v<float> * float(frame.frames_left) / float(frame.frame_count);
   const float radius = 0.05f * glm::length(scene_->boundsMax() - scene_->boundsMin());
   return radius * glm::vec3(std::sin(phase), 0.0f, 1.0f - std::cos(phase));
 }
@@ -153,20 +154,20 @@ void IrradianceVolumeTechnique::render(Frame& frame) {
   // Without bounces the probes are never read: the frame is `direct`'s.
   const bool probes = bounces_ > 0;
   if (probes && (rasterise_every_frame_ || !rasterised_)) {
-    auto pass = profiler.pass("rasterise cube maps");
+    auto pass = profiler.pass(kRasteriseProbesPass);
     rasteriseProbes();
   }
   camera_gbuffer_->render(*scene_, &profiler);
   lighting_.writeEmission(*scene_, *camera_gbuffer_, frame.target, profiler);
-  std::vector<LitView> views = {{&*camera_gbuffer_, &frame.target, "shading", false}};
+  std::vector<LitView> views = {{&*camera_gbuffer_, &frame.target, kShadingPass, false}};
   if (probes) {
     probe_direct_->clear(0, 0, 0);
-    views.push_back({&*probe_gbuffer_, &*probe_direct_, "relight cube maps", true});
+    views.push_back({&*probe_gbuffer_, &*probe_direct_, kProbeDirectPass, true});
   }
   lighting_.addDirect(*scene_, views, profiler);
   bounce(profiler);
   if (bounces_ > 0) {
-    auto pass = profiler.pass("indirect");
+    auto pass = profiler.pass(kIndirectPass);
     addIndirect(*camera_gbuffer_, frame.target, false);
   }
 }
@@ -197,7 +198,7 @@ std::vector<AuxiliaryImage> IrradianceVolumeTechnique::auxiliaryImages() {
 std::vector<TechniqueStatistic> IrradianceVolumeTechnique::statistics() const {
   return {{"grid_points", double(grid_.probeCount())},
           {"cube_texels", double(grid_.tileCount()) * grid_.face * grid_.face},
-          {"sh_coefficients", double(sh::coefficientCount(band_))},
+          {"sh_coefficients", double(sh::shCoefficientCount(band_))},
           {"vertices", scene_ ? double(scene_->vertexCount()) : 0.0}};
 }
 
@@ -226,6 +227,20 @@ TechniqueInfo irradianceVolumeTechniqueInfo() {
                       "on the last frame; the cube maps are rasterised once)"),
   };
   for (ParameterSpec spec : directLightingParameters()) info.parameters.push_back(std::move(spec));
+  PassDeclarations& passes = info.passes;
+  passes.add(passPath({kFramePass, kRasteriseProbesPass}),
+             "the probes' cube maps as tiles of one G-buffer (every frame with motion=objects)");
+  passes.add(passPath({kFramePass, kGBufferPass}), "what each camera pixel's primary ray hits");
+  DirectLighting::declarePasses(
+      passes, kFramePass,
+      {{kProbeDirectPass, "light added into the probes' cube maps (Table 1: rendering cube maps "
+                          "using raster data)"}});
+  passes.add(passPath({kFramePass, kShProjectionPass}),
+             "eq. 2: the lit cube maps projected to SH coefficients, per bounce");
+  passes.add(passPath({kFramePass, kRelightProbesPass}),
+             "the cube maps relit with the previous bounce's indirect light");
+  passes.add(passPath({kFramePass, kIndirectPass}),
+             "eq. 3-6: the last bounce's indirect light added into the camera view");
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IrradianceVolumeTechnique>(values);
   };

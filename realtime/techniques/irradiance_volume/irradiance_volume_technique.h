@@ -3,18 +3,28 @@
 // & Goel 2005). Each frame: rasterise the probes' cube maps into a G-buffer atlas (once, when only
 // the light moves), light them with `direct`'s shadow-mapped light samples, then per bounce
 // project them to SH (eq. 2) and relight them with the interpolated indirect light (eq. 3-6);
-// the camera view gets direct light plus the last bounce's indirect light.
+// the camera view gets direct light plus the last bounce's indirect light. See README.md beside
+// this file.
 #pragma once
 
-#include "realtime/gbuffer.h"
+#include "realtime/gbuffer/gbuffer.h"
+#include "realtime/gl/fullscreen_pass.h"
 #include "realtime/gl/objects.h"
+#include "realtime/lighting/direct_lighting.h"
 #include "realtime/technique.h"
-#include "realtime/techniques/direct/direct_lighting.h"
 #include "realtime/techniques/irradiance_volume/probe_grid.h"
 
 #include <optional>
+#include <string_view>
 
 namespace gib::rt {
+
+// The passes of a frame, as Table 1's rows (irradiance_volume_technique.cpp declares them).
+inline constexpr std::string_view kRasteriseProbesPass = "rasterise cube maps";
+inline constexpr std::string_view kProbeDirectPass = "probe direct light";  // inside kLightsPass
+inline constexpr std::string_view kShProjectionPass = "sh projection";
+inline constexpr std::string_view kRelightProbesPass = "relight cube maps";
+inline constexpr std::string_view kIndirectPass = "indirect";
 
 class IrradianceVolumeTechnique final : public Technique {
  public:
@@ -48,8 +58,8 @@ class IrradianceVolumeTechnique final : public Technique {
   std::optional<GBuffer> camera_gbuffer_, probe_gbuffer_;
   std::optional<RenderTarget> probe_direct_, probe_lit_;
   gl::Buffer coefficients_, weights_, phong_factors_;
-  gl::Program project_, indirect_;
-  gl::VertexArray empty_vertex_array_;
+  gl::Program project_;
+  gl::FullScreenPass indirect_;
 };
 
 TechniqueInfo irradianceVolumeTechniqueInfo();

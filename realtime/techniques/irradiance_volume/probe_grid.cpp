@@ -19,9 +19,11 @@ std::vector<GBufferView> ProbeGrid::views(float near_plane, float far_plane) con
   result.reserve(std::size_t(tileCount()));
   for (int probe = 0; probe < probeCount(); ++probe) {
     const glm::vec3 eye = probePosition(probe);
-    for (int f = 0; f < 6; ++f)
-      result.push_back({cubeFaceViewProjection(eye, f, near_plane, far_plane), eye, tileX(probe, f),
-                        tileY(probe, f), face, face});
+    for (int f = 0; f < gpu::kCubeFaces; ++f) {
+      const glm::ivec2 tile = tileOrigin(probe, f);
+      result.push_back(
+          {cubeFaceViewProjection(eye, f, near_plane, far_plane), eye, tile.x, tile.y, face, face});
+    }
   }
   return result;
 }

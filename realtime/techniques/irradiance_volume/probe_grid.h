@@ -3,7 +3,8 @@
 // one 2D G-buffer ("atlas"), six tiles per probe, so that one deferred pass lights all of them.
 #pragma once
 
-#include "realtime/gbuffer.h"
+#include "realtime/gbuffer/gbuffer.h"
+#include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
 
 #include <glm/vec3.hpp>
 
@@ -19,14 +20,15 @@ struct ProbeGrid {
   int tiles_x = 1;         // tiles per row of the atlas
 
   int probeCount() const { return n * n * n; }
-  int tileCount() const { return 6 * probeCount(); }
+  int tileCount() const { return gpu::kCubeFaces * probeCount(); }
   int atlasWidth() const { return tiles_x * face; }
   int atlasHeight() const { return ((tileCount() + tiles_x - 1) / tiles_x) * face; }
   // Probe index (z·n + y)·n + x.
   glm::vec3 probePosition(int index) const;
-  // The tile of a probe's face: its lower-left texel in the atlas.
-  int tileX(int probe, int face_index) const { return ((probe * 6 + face_index) % tiles_x) * face; }
-  int tileY(int probe, int face_index) const { return ((probe * 6 + face_index) / tiles_x) * face; }
+  // The tile of a probe's face: its lower-left texel in the atlas (irradiance_volume_shared.h).
+  glm::ivec2 tileOrigin(int probe, int face_index) const {
+    return gpu::tileOrigin(gpu::probeTile(probe, face_index), tiles_x, face);
+  }
 
   // The view of every tile, for GBuffer::renderViews.
   std::vector<GBufferView> views(float near_plane, float far_plane) const;

@@ -3,10 +3,10 @@
 // shadow-mapped with `direct`'s shadow maps, added into the source map. Shooting then treats it
 // like emission: the texel re-radiates what it reflects of the point light, so the stochastic
 // iteration computes the bounces after the first.
-#include "atlas/atlas_maps.glsl"
-#include "techniques/direct/shadow_lookup.glsl"
-#include "techniques/direct/light_irradiance.glsl"
-#include "shaders/phong_brdf.glsl"
+#include "realtime/atlas/atlas_maps.glsl"
+#include "realtime/lighting/shadow_lookup.glsl"
+#include "realtime/lighting/light_irradiance.glsl"
+#include "realtime/gpu_scene/brdf.glsl"
 
 layout(location = 0) out vec4 o_radiance;
 

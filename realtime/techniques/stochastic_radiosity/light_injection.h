@@ -6,7 +6,7 @@
 #pragma once
 
 #include "realtime/atlas/atlas_textures.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 
 namespace gib::rt {
 

@@ -1,8 +1,10 @@
 // One level of the power pyramid: each texel the sum of the four below it (Barsi & Jakab sum
 // four texels; the book allows sum or average: a sum keeps the top texel equal to Φ).
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, r32f) uniform readonly image2D u_finer;
-layout(binding = 1, r32f) uniform writeonly image2D u_coarser;
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
+
+layout(local_size_x = kPyramidGroupSize, local_size_y = kPyramidGroupSize) in;
+layout(binding = kImageSourceUnit, r32f) uniform readonly image2D u_finer;
+layout(binding = kImageDestinationUnit, r32f) uniform writeonly image2D u_coarser;
 
 void main() {
   ivec2 c = ivec2(gl_GlobalInvocationID.xy);

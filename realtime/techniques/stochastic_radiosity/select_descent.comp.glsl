@@ -6,11 +6,11 @@
 // cmin ≤ r < cmin + power, so a child without power is never chosen; if rounding leaves r at or
 // above the children's sum, the last child with power is taken (the book's code would fall
 // through to the fourth child even when it has none).
-#include "techniques/stochastic_radiosity/selection.glsl"
+#include "realtime/techniques/stochastic_radiosity/selection.glsl"
 
-layout(local_size_x = 64) in;
-layout(binding = 0, r32f) uniform readonly image2D u_level;  // the level descended into
-layout(binding = 1, r32f) uniform readonly image2D u_top;    // 1×1, read by the first pass
+layout(local_size_x = kDescentGroupSize) in;
+layout(binding = kImageSourceUnit, r32f) uniform readonly image2D u_level;  // the level descended into
+layout(binding = kImageDestinationUnit, r32f) uniform readonly image2D u_top;  // 1×1, first pass
 uniform bool u_first;
 uniform int u_count;
 

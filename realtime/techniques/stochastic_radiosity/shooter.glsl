@@ -1,8 +1,8 @@
 // The selected shooter as a point with a frame: its atlas sample point y_j, lifted along its
 // normal by u_shooter_lift (so that surfaces meeting it at a corner are not cut by the near
 // plane of its view), and an orthonormal basis (t, b, n) with n the shooter's normal.
-#include "atlas/atlas_maps.glsl"
-#include "techniques/stochastic_radiosity/selection.glsl"
+#include "realtime/atlas/atlas_maps.glsl"
+#include "realtime/techniques/stochastic_radiosity/selection.glsl"
 
 uniform float u_shooter_lift;  // world units
 

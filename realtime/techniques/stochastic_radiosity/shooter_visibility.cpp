@@ -1,6 +1,7 @@
 #include "realtime/techniques/stochastic_radiosity/shooter_visibility.h"
 
 #include "realtime/gl/shader_library.h"
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 
 namespace gib::rt {
 
@@ -32,8 +33,8 @@ ShooterVisibility::ShooterVisibility(ShooterProjection projection, int map_size,
     fb.checkComplete();
   }
   program_ = gl::buildProgram(
-      {{GL_VERTEX_SHADER, "techniques/stochastic_radiosity/visibility.vert.glsl"},
-       {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/visibility.frag.glsl"}},
+      {{GL_VERTEX_SHADER, "realtime/techniques/stochastic_radiosity/visibility.vert.glsl"},
+       {GL_FRAGMENT_SHADER, "realtime/techniques/stochastic_radiosity/visibility.frag.glsl"}},
       defines());
   glProgramUniform1f(program_.id(), program_.uniform("u_near"), near_);
   glProgramUniform1f(program_.id(), program_.uniform("u_far"), far_);
@@ -68,7 +69,7 @@ void ShooterVisibility::render(const atlas::AtlasMesh& mesh) const {
 }
 
 void ShooterVisibility::bindForLookup() const {
-  distance_.bind(kVisibilityUnit);
+  distance_.bind(gpu::kVisibilityUnit);
 }
 
 void ShooterVisibility::setLookupConstants(const gl::Program& program) const {

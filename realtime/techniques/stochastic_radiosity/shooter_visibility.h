@@ -14,8 +14,6 @@ namespace gib::rt {
 
 enum class ShooterProjection { kHemicube, kHemisphere };
 
-inline constexpr GLuint kVisibilityUnit = 6;  // visibility_lookup.glsl's u_visibility
-
 class ShooterVisibility {
  public:
   // `map_size`: texels per side of a hemicube face (of the hemisphere's disk); `extent`: the
@@ -32,7 +30,7 @@ class ShooterVisibility {
   void render(const atlas::AtlasMesh& mesh) const;
   // Sets the lookup's constant uniforms of `program` (once, after it is built).
   void setLookupConstants(const gl::Program& program) const;
-  // Binds the map to kVisibilityUnit.
+  // Binds the map to gpu::kVisibilityUnit (stochastic_radiosity_shared.h).
   void bindForLookup() const;
 
  private:

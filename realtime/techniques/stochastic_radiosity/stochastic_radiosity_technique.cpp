@@ -1,10 +1,12 @@
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
 
+#include "common/splitmix.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
 #include "realtime/techniques/stochastic_radiosity/light_injection.h"
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 
 #include <glm/geometric.hpp>
 
@@ -26,15 +28,6 @@ StochasticRadiositySettings settingsFrom(const ParameterValues& p) {
   return s;
 }
 
-// SplitMix64's finaliser: a counter-based hash, so iteration m's number does not depend on what
-// ran before it.
-std::uint64_t mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
-
 }  // namespace
 
 StochasticRadiosityTechnique::StochasticRadiosityTechnique(const ParameterValues& parameters)
@@ -46,7 +39,7 @@ StochasticRadiosityTechnique::StochasticRadiosityTechnique(
 
 float StochasticRadiosityTechnique::selectionValue(std::uint32_t seed, int iteration) {
   const std::uint64_t h =
-      mix((std::uint64_t(seed) << 32) ^ std::uint64_t(std::uint32_t(iteration)));
+      splitMix64((std::uint64_t(seed) << 32) ^ std::uint64_t(std::uint32_t(iteration)));
   return float(h >> 40) * 0x1p-24f;  // 24 bits: every value exact and below 1
 }
 
@@ -85,18 +78,17 @@ void StochasticRadiosityTechnique::prepare(const GpuScene& scene, int /*width*/,
     fb.setDrawBuffers(2);
     fb.checkComplete();
   }
-  update_program_ =
-      gl::buildProgram({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl"},
-                        {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/update.frag.glsl"}},
-                       visibility_->defines());
-  visibility_->setLookupConstants(update_program_);
-  glProgramUniform1f(update_program_.id(), update_program_.uniform("u_texel_area"),
+  update_pass_ = gl::FullScreenPass("realtime/techniques/stochastic_radiosity/update.frag.glsl",
+                                     visibility_->defines());
+  const gl::Program& update = update_pass_.program();
+  visibility_->setLookupConstants(update);
+  glProgramUniform1f(update.id(), update.uniform("u_texel_area"),
                      layout_.texels_per_unit > 0
                          ? 1.0f / (layout_.texels_per_unit * layout_.texels_per_unit)
                          : 0.0f);
   view_program_ =
-      gl::buildProgram({{GL_VERTEX_SHADER, "techniques/stochastic_radiosity/view.vert.glsl"},
-                        {GL_FRAGMENT_SHADER, "techniques/stochastic_radiosity/view.frag.glsl"}});
+      gl::buildProgram({{GL_VERTEX_SHADER, "realtime/techniques/stochastic_radiosity/view.vert.glsl"},
+                        {GL_FRAGMENT_SHADER, "realtime/techniques/stochastic_radiosity/view.frag.glsl"}});
 
   // Step 4: the power of the initial estimate (emission and injected light alone): an update
   // with no shooter (the Shooters buffer starts empty) and m = 1; then its pyramid.
@@ -113,42 +105,41 @@ void StochasticRadiosityTechnique::runUpdatePass() {
   glViewport(0, 0, r, r);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  update_program_.use();
-  glUniform1f(update_program_.uniform("u_iteration"), float(std::max(iteration_, 1)));
+  update_pass_.use();
+  glUniform1f(update_pass_.program().uniform("u_iteration"), float(std::max(iteration_, 1)));
   atlas_->bind();
-  source_.bind(4);
-  reflected_[std::size_t(current_)].bind(5);
+  source_.bind(gpu::kRadiositySourceUnit);
+  reflected_[std::size_t(current_)].bind(gpu::kRadiosityReflectedUnit);
   visibility_->bindForLookup();
-  selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, kShootersBinding);
-  empty_vertex_array_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kShootersBinding);
+  update_pass_.draw();
   current_ = next;
 }
 
 void StochasticRadiosityTechnique::step(gl::PassProfiler& profiler) {
   ++iteration_;
   {
-    auto pass = profiler.pass("selection");
+    auto pass = profiler.pass(kSelectionPass);
     selection_->select({selectionValue(settings_.seed, iteration_)});
   }
   {
-    auto pass = profiler.pass("visibility");
+    auto pass = profiler.pass(kVisibilityPass);
     atlas_->bind();
-    selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, kShootersBinding);
+    selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kShootersBinding);
     visibility_->render(*mesh_);
   }
   {
-    auto pass = profiler.pass("update");
+    auto pass = profiler.pass(kUpdatePass);
     runUpdatePass();
   }
   if (settings_.selection == SelectionMethod::kGpu) {
-    auto pass = profiler.pass("mipmap");
+    auto pass = profiler.pass(kMipmapPass);
     selection_->buildPyramid();
   }
 }
 
 void StochasticRadiosityTechnique::render(Frame& frame) {
-  auto pass = frame.profiler.pass("view");
+  auto pass = frame.profiler.pass(kViewPass);
   const scene::Rgb sky = scene_->scene().sky_radiance;
   frame.target.clear(sky.r, sky.g, sky.b);  // what rays that leave the scene see
   frame.target.bind();
@@ -159,8 +150,8 @@ void StochasticRadiosityTechnique::render(Frame& frame) {
   view_program_.use();
   scene_->bindSceneBuffers();
   atlas_->bind();
-  source_.bind(4);
-  reflected_[std::size_t(current_)].bind(5);
+  source_.bind(gpu::kRadiositySourceUnit);
+  reflected_[std::size_t(current_)].bind(gpu::kRadiosityReflectedUnit);
   mesh_->draw();
 }
 
@@ -223,6 +214,18 @@ TechniqueInfo stochasticRadiosityTechniqueInfo() {
       numericParameter("seed", ParameterType::kInteger, "0", 0, 2147483647, "",
                        "random sequence of the texel selections, the same every run"),
   };
+  PassDeclarations& passes = info.passes;
+  passes.add(passPath({kFramePass, kViewPass}),
+             "the camera view: bilinear lookups of the atlas plus the emitters' front sides");
+  passes.add(std::string(kIterationPass), "one shot: a texel selected, its light transferred");
+  passes.add(passPath({kIterationPass, kSelectionPass}),
+             "a texel chosen with probability proportional to its power");
+  passes.add(passPath({kIterationPass, kVisibilityPass}),
+             "the scene drawn from the shooter into its visibility map");
+  passes.add(passPath({kIterationPass, kUpdatePass}),
+             "every texel in texture space: transfer and the running average of eq. (2)");
+  passes.add(passPath({kIterationPass, kMipmapPass}),
+             "the power pyramid for the next selection (GPU selection only)");
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<StochasticRadiosityTechnique>(values);
   };

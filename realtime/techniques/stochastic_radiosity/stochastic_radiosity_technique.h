@@ -6,13 +6,14 @@
 // reflected radiance in texture space with the running average of the paper's eq. (2). A frame
 // draws the camera view with bilinear lookups of the atlas plus emission.
 //
-// Passes of an iteration: "selection", "visibility", "update", "mipmap" (the power pyramid for
-// the next selection; GPU selection only).
+// Passes of an iteration: selection, visibility, update, mipmap (the power pyramid for the next
+// selection; GPU selection only); of a frame: view. See README.md beside this file.
 #pragma once
 
 #include "realtime/atlas/atlas_layout.h"
 #include "realtime/atlas/atlas_mesh.h"
 #include "realtime/atlas/atlas_textures.h"
+#include "realtime/gl/fullscreen_pass.h"
 #include "realtime/technique.h"
 #include "realtime/techniques/stochastic_radiosity/shooter_visibility.h"
 #include "realtime/techniques/stochastic_radiosity/texel_selection.h"
@@ -20,8 +21,15 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 namespace gib::rt {
+
+inline constexpr std::string_view kSelectionPass = "selection";    // of an iteration
+inline constexpr std::string_view kVisibilityPass = "visibility";  // of an iteration
+inline constexpr std::string_view kUpdatePass = "update";          // of an iteration
+inline constexpr std::string_view kMipmapPass = "mipmap";          // of an iteration, GPU selection
+inline constexpr std::string_view kViewPass = "view";              // of a frame
 
 struct StochasticRadiositySettings {
   int atlas_resolution = 128;
@@ -75,8 +83,8 @@ class StochasticRadiosityTechnique final : public Technique {
   gl::Framebuffer source_framebuffer_;
   int current_ = 0;  // reflected_[current_] holds the estimate
   int iteration_ = 0;
-  gl::Program update_program_, view_program_;
-  gl::VertexArray empty_vertex_array_;
+  gl::FullScreenPass update_pass_;
+  gl::Program view_program_;
 };
 
 TechniqueInfo stochasticRadiosityTechniqueInfo();

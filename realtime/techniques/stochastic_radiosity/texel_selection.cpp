@@ -9,9 +9,6 @@ namespace gib::rt {
 
 namespace {
 
-constexpr int kPyramidGroup = 8;   // power_pyramid.comp.glsl's local size
-constexpr int kDescentGroup = 64;  // select_descent.comp.glsl's local size
-
 void bindLevel(GLuint unit, const gl::Texture& texture, int level, GLenum access) {
   glBindImageTexture(unit, texture.id(), level, GL_FALSE, 0, access, GL_R32F);
 }
@@ -27,13 +24,13 @@ TexelSelection::TexelSelection(SelectionMethod method, int resolution, int capac
   power_ = gl::Texture::make2D(GL_R32F, resolution, resolution,
                                method == SelectionMethod::kGpu ? levels_ : 1);
   power_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
-  const std::vector<SelectedTexel> initial(std::size_t(capacity), SelectedTexel{});
+  const std::vector<gpu::Shooter> initial(std::size_t(capacity), kNoShooter);
   shooters_ = gl::Buffer::fromVector(initial);
   if (method == SelectionMethod::kGpu) {
     sum_ = gl::buildProgram(
-        {{GL_COMPUTE_SHADER, "techniques/stochastic_radiosity/power_pyramid.comp.glsl"}});
+        {{GL_COMPUTE_SHADER, "realtime/techniques/stochastic_radiosity/power_pyramid.comp.glsl"}});
     descend_ = gl::buildProgram(
-        {{GL_COMPUTE_SHADER, "techniques/stochastic_radiosity/select_descent.comp.glsl"}});
+        {{GL_COMPUTE_SHADER, "realtime/techniques/stochastic_radiosity/select_descent.comp.glsl"}});
   }
 }
 
@@ -42,10 +39,10 @@ void TexelSelection::buildPyramid() const {
   sum_.use();
   for (int level = 1; level < levels_; ++level) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    bindLevel(0, power_, level - 1, GL_READ_ONLY);
-    bindLevel(1, power_, level, GL_WRITE_ONLY);
+    bindLevel(gpu::kImageSourceUnit, power_, level - 1, GL_READ_ONLY);
+    bindLevel(gpu::kImageDestinationUnit, power_, level, GL_WRITE_ONLY);
     const int size = std::max(1, resolution_ >> level);
-    const GLuint groups = GLuint((size + kPyramidGroup - 1) / kPyramidGroup);
+    const GLuint groups = GLuint((size + gpu::kPyramidGroupSize - 1) / gpu::kPyramidGroupSize);
     glDispatchCompute(groups, groups, 1);
   }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -61,19 +58,20 @@ void TexelSelection::select(const std::vector<float>& u) {
 }
 
 void TexelSelection::selectOnGpu(const std::vector<float>& u) {
-  std::vector<SelectedTexel> start(u.size());
+  std::vector<gpu::Shooter> start(u.size(), kNoShooter);
   for (std::size_t i = 0; i < u.size(); ++i) start[i].u = u[i];
-  shooters_.update(0, start.size() * sizeof(SelectedTexel), start.data());
-  shooters_.bindBase(GL_SHADER_STORAGE_BUFFER, kShootersBinding);
+  shooters_.update(0, start.size() * sizeof(gpu::Shooter), start.data());
+  shooters_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kShootersBinding);
   descend_.use();
   glUniform1i(descend_.uniform("u_count"), GLint(u.size()));
-  bindLevel(1, power_, levels_ - 1, GL_READ_ONLY);
-  const GLuint groups = GLuint((u.size() + kDescentGroup - 1) / kDescentGroup);
+  // The descent reads the level it descends into, and the 1×1 top on its first pass.
+  bindLevel(gpu::kImageDestinationUnit, power_, levels_ - 1, GL_READ_ONLY);
+  const GLuint groups = GLuint((u.size() + gpu::kDescentGroupSize - 1) / gpu::kDescentGroupSize);
   // log2 R passes, from the level below the top down to the texels themselves.
   for (int level = levels_ - 2; level >= 0; --level) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glUniform1i(descend_.uniform("u_first"), level == levels_ - 2);
-    bindLevel(0, power_, level, GL_READ_ONLY);
+    bindLevel(gpu::kImageSourceUnit, power_, level, GL_READ_ONLY);
     glDispatchCompute(groups, 1, 1);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -88,9 +86,9 @@ void TexelSelection::selectOnCpu(const std::vector<float>& u) {
                     power.data());
   double total = 0;
   for (float p : power) total += p;
-  std::vector<SelectedTexel> selected(u.size());
+  std::vector<gpu::Shooter> selected(u.size(), kNoShooter);
   for (std::size_t s = 0; s < u.size(); ++s) {
-    SelectedTexel& out = selected[s];
+    gpu::Shooter& out = selected[s];
     out.u = u[s];
     out.total_power = float(total);
     if (total <= 0) continue;  // texel stays (−1, −1)
@@ -111,13 +109,12 @@ void TexelSelection::selectOnCpu(const std::vector<float>& u) {
     out.texel = {int(chosen % std::size_t(resolution_)), int(chosen / std::size_t(resolution_))};
     out.power = power[chosen];
   }
-  shooters_.update(0, selected.size() * sizeof(SelectedTexel), selected.data());
+  shooters_.update(0, selected.size() * sizeof(gpu::Shooter), selected.data());
 }
 
-std::vector<SelectedTexel> TexelSelection::readSelections(int count) const {
-  std::vector<SelectedTexel> out;
-  out.resize(std::size_t(count));
-  glGetNamedBufferSubData(shooters_.id(), 0, GLsizeiptr(out.size() * sizeof(SelectedTexel)),
+std::vector<gpu::Shooter> TexelSelection::readSelections(int count) const {
+  std::vector<gpu::Shooter> out(std::size_t(count), kNoShooter);
+  glGetNamedBufferSubData(shooters_.id(), 0, GLsizeiptr(out.size() * sizeof(gpu::Shooter)),
                           out.data());
   return out;
 }

@@ -7,14 +7,13 @@
 //         selection value (the book's SelectTexel). Nothing is read back.
 //   kCpu: the power map is read back and searched linearly with a running sum (the paper's first
 //         implementation, whose read-back it found to dominate the iteration).
-// Both write the selected texels into one storage buffer (selection.glsl's Shooters), which the
-// later passes read on the GPU. Several selections can run at once (one per value of u), which
+// Both write the selected texels into one storage buffer (Shooters, whose record is declared in
+// stochastic_radiosity_shared.h), which the later passes read on the GPU. Several selections can run at once (one per value of u), which
 // the tests use; the technique selects one texel per iteration.
 #pragma once
 
 #include "realtime/gl/objects.h"
-
-#include <glm/vec2.hpp>
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 
 #include <vector>
 
@@ -22,18 +21,8 @@ namespace gib::rt {
 
 enum class SelectionMethod { kGpu, kCpu };
 
-inline constexpr GLuint kShootersBinding = 1;  // shader storage binding of selection.glsl
-
-// std430 struct Shooter of selection.glsl.
-struct SelectedTexel {
-  glm::ivec2 texel{-1, -1};  // (−1, −1): nothing has power (Φ = 0)
-  float power = 0;           // lum(L_j)·A_j of the selected texel, as the selection saw it
-  float total_power = 0;     // Φ
-  float remaining = 0;       // descent state: the selection value left within the current texel
-  float u = 0;               // the uniform random number in [0, 1) this selection was made with
-  glm::ivec2 padding{0};
-};
-static_assert(sizeof(SelectedTexel) == 32);
+// A selection with nothing selected yet.
+inline constexpr gpu::Shooter kNoShooter = {{-1, -1}, 0, 0, 0, 0, {0, 0}};
 
 class TexelSelection {
  public:
@@ -51,7 +40,7 @@ class TexelSelection {
   void select(const std::vector<float>& u);
   const gl::Buffer& shooters() const { return shooters_; }
   // Reads the first `count` selections back (tests, and nothing else: it stalls the pipeline).
-  std::vector<SelectedTexel> readSelections(int count) const;
+  std::vector<gpu::Shooter> readSelections(int count) const;
 
  private:
   void selectOnGpu(const std::vector<float>& u);

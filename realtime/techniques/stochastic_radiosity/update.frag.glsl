@@ -27,20 +27,17 @@
 // The shooter's radiance includes its emission, which is one-sided: it shoots into the half-space
 // its normal points to. A receiver behind the shooter's plane, or seeing the shooter from its back
 // side, gets nothing (reflection in the atlas is the front side's).
-#include "techniques/stochastic_radiosity/shooter.glsl"
-#include "techniques/stochastic_radiosity/visibility_lookup.glsl"
-#include "shaders/phong_brdf.glsl"
+#include "realtime/techniques/stochastic_radiosity/shooter.glsl"
+#include "realtime/techniques/stochastic_radiosity/visibility_lookup.glsl"
+#include "realtime/gpu_scene/brdf.glsl"
+#include "common/luminance_shared.h"
 
-layout(binding = 4) uniform sampler2D u_source;     // L^e plus injected direct light
-layout(binding = 5) uniform sampler2D u_reflected;  // L̃^r_{m−1}
-uniform float u_iteration;                          // m ≥ 1
-uniform float u_texel_area;                         // world area of a whole texel
+layout(binding = kRadiositySourceUnit) uniform sampler2D u_source;  // L^e plus injected direct light
+layout(binding = kRadiosityReflectedUnit) uniform sampler2D u_reflected;  // L̃^r_{m−1}
+uniform float u_iteration;   // m ≥ 1
+uniform float u_texel_area;  // world area of a whole texel
 layout(location = 0) out vec4 o_reflected;
 layout(location = 1) out float o_power;
-
-float luminance(vec3 c) {
-  return dot(c, vec3(0.2126, 0.7152, 0.0722));
-}
 
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);

@@ -1,10 +1,11 @@
 // Radiance seen by the camera: bilinear lookups of the atlas (the reflected estimate and the
 // injected direct light) plus the emission, which only the front side of an emitter shows.
-#include "scene/scene.glsl"
-#include "atlas/atlas_maps.glsl"
+#include "realtime/gpu_scene/scene.glsl"
+#include "realtime/atlas/atlas_maps.glsl"
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 
-layout(binding = 4) uniform sampler2D u_source;     // L^e plus injected direct light
-layout(binding = 5) uniform sampler2D u_reflected;  // L̃^r
+layout(binding = kRadiositySourceUnit) uniform sampler2D u_source;  // L^e plus injected direct light
+layout(binding = kRadiosityReflectedUnit) uniform sampler2D u_reflected;  // L̃^r
 in vec2 v_atlas_uv;
 in vec3 v_world;
 flat in vec3 v_normal;

@@ -1,6 +1,6 @@
 // The camera image (Barsi & Jakab §3.3): the scene with its atlas coordinates.
-#include "scene/scene.glsl"
-#include "atlas/atlas_vertex.glsl"
+#include "realtime/gpu_scene/scene.glsl"
+#include "realtime/atlas/atlas_vertex.glsl"
 
 out vec2 v_atlas_uv;
 out vec3 v_world;

@@ -1,8 +1,8 @@
 // Draws the scene into the shooter's visibility map (visibility_projection.glsl). The distance
 // from the shooter goes into the colour (visibility.frag.glsl); the depth test keeps the nearest.
-#include "atlas/atlas_vertex.glsl"
-#include "techniques/stochastic_radiosity/shooter.glsl"
-#include "techniques/stochastic_radiosity/visibility_projection.glsl"
+#include "realtime/atlas/atlas_vertex.glsl"
+#include "realtime/techniques/stochastic_radiosity/shooter.glsl"
+#include "realtime/techniques/stochastic_radiosity/visibility_projection.glsl"
 
 uniform float u_near;
 uniform float u_far;

@@ -4,9 +4,11 @@
 // texel spans an angle of about 2/u_map_size (the hemisphere's texels grow by 1/cos θ towards the
 // rim), over which a receiver seen at angle θx from its normal changes distance by
 // distance·angle·tan θx.
-#include "techniques/stochastic_radiosity/visibility_projection.glsl"
+#include "realtime/techniques/stochastic_radiosity/visibility_projection.glsl"
 
-layout(binding = 6) uniform sampler2DArray u_visibility;  // distance, 1e30 where nothing was drawn
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
+
+layout(binding = kVisibilityUnit) uniform sampler2DArray u_visibility;  // distance, 1e30: nothing drawn
 const float kRelativeEpsilon = 0.005;
 const float kMaxSlope = 20.0;  // tan of ~87°: grazing receivers get at most this slope
 

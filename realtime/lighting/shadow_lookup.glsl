@@ -2,19 +2,20 @@
 // a depth comparison (hard: nearest texel; PCF: the hardware's bilinearly filtered comparison,
 // the book's 2×2 PCF, over a (2r+1)² grid of taps one texel apart), or for a variance shadow map
 // the one-tailed Chebyshev bound σ²/(σ² + (z − E[Z])²), taken as 1 when z ≤ E[Z].
-#include "techniques/direct/light_space.glsl"
+#include "realtime/gl/binding_plan_shared.h"
+#include "realtime/lighting/light_space.glsl"
 
 #ifdef POINT_LIGHT
 #ifdef VARIANCE_SHADOW_MAP
-layout(binding = 2) uniform samplerCube u_shadow_map;
+layout(binding = kShadowMapUnit) uniform samplerCube u_shadow_map;
 #else
-layout(binding = 2) uniform samplerCubeShadow u_shadow_map;
+layout(binding = kShadowMapUnit) uniform samplerCubeShadow u_shadow_map;
 #endif
 #else
 #ifdef VARIANCE_SHADOW_MAP
-layout(binding = 2) uniform sampler2D u_shadow_map;
+layout(binding = kShadowMapUnit) uniform sampler2D u_shadow_map;
 #else
-layout(binding = 2) uniform sampler2DShadow u_shadow_map;
+layout(binding = kShadowMapUnit) uniform sampler2DShadow u_shadow_map;
 #endif
 #endif
 

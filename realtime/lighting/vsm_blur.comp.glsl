@@ -1,13 +1,15 @@
 // One direction of the separable box filter over a variance shadow map (the book's 5×5 texel
 // filter, §4.1.3, Fig. 4.5). Cube maps are filtered face by face; taps clamp at face edges.
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+#include "realtime/lighting/lighting_shared.h"
+
+layout(local_size_x = kVsmBlurGroupSize, local_size_y = kVsmBlurGroupSize, local_size_z = 1) in;
 #ifdef POINT_LIGHT
-layout(rg32f, binding = 0) uniform readonly imageCube u_source;
-layout(rg32f, binding = 1) uniform writeonly imageCube u_destination;
+layout(rg32f, binding = kImageSourceUnit) uniform readonly imageCube u_source;
+layout(rg32f, binding = kImageDestinationUnit) uniform writeonly imageCube u_destination;
 #define COORD(xy) ivec3(xy, int(gl_GlobalInvocationID.z))
 #else
-layout(rg32f, binding = 0) uniform readonly image2D u_source;
-layout(rg32f, binding = 1) uniform writeonly image2D u_destination;
+layout(rg32f, binding = kImageSourceUnit) uniform readonly image2D u_source;
+layout(rg32f, binding = kImageDestinationUnit) uniform writeonly image2D u_destination;
 #define COORD(xy) (xy)
 #endif
 uniform ivec2 u_step;  // (1,0) then (0,1)

@@ -1,5 +1,5 @@
 // Shadow map generation (book §4.1.1): the scene seen from the light.
-#include "scene/vertex.glsl"
+#include "realtime/gpu_scene/vertex.glsl"
 uniform mat4 u_face_view_projection;  // this cube face, or the orthographic map
 out vec3 v_world;
 

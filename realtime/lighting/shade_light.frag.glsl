@@ -1,10 +1,10 @@
 // Deferred shading of one light sample (point or directional), added to the frame with additive
 // blending: f · (incident irradiance) · cosθ · visibility at each pixel's primary hit.
-#include "scene/scene.glsl"
-#include "shaders/phong_brdf.glsl"
-#include "techniques/direct/shadow_lookup.glsl"
-#include "shaders/shaded_surface.glsl"
-#include "techniques/direct/light_irradiance.glsl"
+#include "realtime/gpu_scene/scene.glsl"
+#include "realtime/gpu_scene/brdf.glsl"
+#include "realtime/lighting/shadow_lookup.glsl"
+#include "realtime/gbuffer/shaded_surface.glsl"
+#include "realtime/lighting/light_irradiance.glsl"
 
 layout(location = 0) out vec4 o_radiance;
 

@@ -1,4 +1,4 @@
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 
 #include "scene/camera.h"
 
@@ -17,33 +17,14 @@ namespace gib::rt {
 
 namespace {
 
-// The vertex layout of scene.glsl's attributes 0, 1, 2: flat triangles, so every vertex carries
-// its triangle's normal and material.
+// The vertex attributes of gpu_scene_shared.h: flat triangles, so every vertex carries its
+// triangle's normal and material.
 struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   std::uint32_t material;
 };
-static_assert(sizeof(Vertex) == 28, "Vertex must be tightly packed (attribute offsets below)");
-
-// std430 struct Material of scene.glsl.
-struct GpuMaterial {
-  glm::vec4 diffuse_type;       // rgb diffuse, w: 0 Lambert, 1 Phong
-  glm::vec4 specular_exponent;  // rgb specular, w: Phong exponent
-  glm::vec4 emission;           // rgb radiance, w unused
-};
-static_assert(sizeof(GpuMaterial) == 48);
-
-// std140 uniform block Camera of scene.glsl.
-struct CameraBlock {
-  glm::mat4 view_projection;
-  glm::mat4 view;
-  glm::mat4 projection;
-  glm::vec4 position;    // xyz, w 1
-  glm::vec4 near_far;    // x near, y far
-  glm::vec4 image_size;  // width, height, 1/width, 1/height
-};
-static_assert(sizeof(CameraBlock) == 3 * 64 + 3 * 16);
+static_assert(sizeof(Vertex) == 28, "Vertex must be tightly packed");
 
 // The unnormalised geometric normal (b − a) × (c − a): its direction is the front side, its length
 // twice the area.
@@ -95,18 +76,19 @@ std::vector<Vertex> flatVertices(const scene::Scene& scene) {
   return vertices;
 }
 
-std::vector<GpuMaterial> gpuMaterials(const scene::Scene& scene) {
-  std::vector<GpuMaterial> materials;
+std::vector<gpu::Material> gpuMaterials(const scene::Scene& scene) {
+  std::vector<gpu::Material> materials;
   for (const scene::Material& m : scene.materials) {
-    const float type = m.type == scene::MaterialType::kPhong ? 1.0f : 0.0f;
+    const float type =
+        float(m.type == scene::MaterialType::kPhong ? gpu::kMaterialPhong : gpu::kMaterialLambert);
     materials.push_back({glm::vec4(m.diffuse, type), glm::vec4(m.specular, m.exponent),
                          glm::vec4(m.emission, 0.0f)});
   }
   return materials;
 }
 
-CameraBlock cameraBlock(const CameraTransform& camera, int width, int height) {
-  CameraBlock block;
+gpu::Camera cameraBlock(const CameraTransform& camera, int width, int height) {
+  gpu::Camera block;
   block.view_projection = camera.projection * camera.view;
   block.view = camera.view;
   block.projection = camera.projection;
@@ -196,23 +178,14 @@ GpuScene::GpuScene(const scene::Scene& scene, int width, int height)
   vertex_count_ = vertices.size();
   vertices_ = gl::Buffer::fromVector(vertices, 0);
   materials_ = gl::Buffer::fromVector(gpuMaterials(scene), 0);
-  const CameraBlock block = cameraBlock(camera_, width, height);
+  const gpu::Camera block = cameraBlock(camera_, width, height);
   camera_block_ = gl::Buffer(sizeof(block), &block, 0);
-
-  const GLuint vao = vertex_array_.id();
-  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
-  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
-  glVertexArrayAttribIFormat(vao, 2, 1, GL_UNSIGNED_INT, offsetof(Vertex, material));
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
-    glVertexArrayAttribBinding(vao, attribute, 0);
-    glEnableVertexArrayAttrib(vao, attribute);
-  }
+  setSceneVertexAttributes<Vertex>(vertex_array_, vertices_);
 }
 
 void GpuScene::bindSceneBuffers() const {
-  materials_.bindBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding);
-  camera_block_.bindBase(GL_UNIFORM_BUFFER, kCameraBinding);
+  materials_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kMaterialsBinding);
+  camera_block_.bindBase(GL_UNIFORM_BUFFER, gpu::kCameraBinding);
 }
 
 void GpuScene::draw() const {

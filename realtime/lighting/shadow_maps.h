@@ -6,10 +6,12 @@
 #pragma once
 
 #include "realtime/gl/objects.h"
-#include "realtime/gpu_scene.h"
-#include "realtime/techniques/direct/light_samples.h"
+#include "realtime/gpu_scene/gpu_scene.h"
+#include "realtime/lighting/light_samples.h"
+#include "realtime/pass_declarations.h"
 
 #include <array>
+#include <string_view>
 
 namespace gib::rt {
 
@@ -18,6 +20,10 @@ class PassProfiler;
 }
 
 enum class ShadowFilter { kHard, kPcf, kVariance };
+
+// The passes ShadowMaps::render opens, inside its caller's pass.
+inline constexpr std::string_view kShadowMapPass = "shadow map";
+inline constexpr std::string_view kShadowMapFilterPass = "shadow map filter";  // variance only
 
 struct ShadowSettings {
   ShadowFilter filter = ShadowFilter::kHard;
@@ -32,12 +38,15 @@ class ShadowMaps {
  public:
   ShadowMaps(const ShadowSettings& settings, const GpuScene& scene);
 
+  // Declares the passes of render() under `parent`.
+  static void declarePasses(PassDeclarations& passes, std::string_view parent);
+
   // Renders the map of `sample` (inside the caller's profiler passes).
   void render(const GpuScene& scene, const LightSample& sample, gl::PassProfiler& profiler);
   // Sets the lookup uniforms of shadow_lookup.glsl that are the same for every sample (planes,
   // size, offsets, filter settings) in `program`; once, when the program is built.
   void setLookupConstants(const gl::Program& program) const;
-  // Binds the map to texture unit 2 and sets the sample's own lookup uniforms (position, axis,
+  // Binds the map to kShadowMapUnit and sets the sample's own lookup uniforms (position, axis,
   // projection) of `program`, which must be the variant for the sample's kind.
   void bindForLookup(const gl::Program& program, const LightSample& sample) const;
 

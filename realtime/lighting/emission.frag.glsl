@@ -1,9 +1,8 @@
 // Paths with no bounce: emitters seen directly (one-sided, from their front) and the sky where
 // the primary ray leaves the scene.
-#include "scene/scene.glsl"
+#include "realtime/gpu_scene/scene.glsl"
+#include "realtime/gbuffer/gbuffer_maps.glsl"
 
-layout(binding = 0) uniform sampler2D u_gbuffer_position;
-layout(binding = 1) uniform sampler2D u_gbuffer_normal;
 uniform vec3 u_sky_radiance;
 layout(location = 0) out vec4 o_radiance;
 

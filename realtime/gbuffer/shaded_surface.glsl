@@ -1,12 +1,12 @@
 // The surface a deferred shading pass shades at its pixel: what the G-buffer holds there, with
-// the normal on the viewer's side and the direction to the viewer. Needs scene/scene.glsl.
+// the normal on the viewer's side and the direction to the viewer. Needs gpu_scene/scene.glsl.
 //
 // Probe views (GBuffer::renderViews) store normals turned towards their own eye, which a
 // full-screen pass does not know: it then takes ωo along the normal, exact for Lambert surfaces
 // and, for Phong, the lobe's value at normal viewing (an approximation the irradiance volume
 // accepts).
-layout(binding = 0) uniform sampler2D u_gbuffer_position;  // xyz world, w ray distance (−1: none)
-layout(binding = 1) uniform sampler2D u_gbuffer_normal;    // xyz geometric normal, w material
+#include "realtime/gbuffer/gbuffer_maps.glsl"
+
 uniform bool u_normals_face_viewer;
 
 struct ShadedSurface {

@@ -1,6 +1,6 @@
 // Hard and PCF shadow maps need depth only; a variance shadow map (book §4.1.3) also stores the
 // light distance and its square, to be blurred and read through Chebyshev's inequality.
-#include "techniques/direct/light_space.glsl"
+#include "realtime/lighting/light_space.glsl"
 in vec3 v_world;
 #ifdef VARIANCE_SHADOW_MAP
 layout(location = 0) out vec2 o_moments;

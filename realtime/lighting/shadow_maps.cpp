@@ -1,9 +1,10 @@
-#include "realtime/techniques/direct/shadow_maps.h"
+#include "realtime/lighting/shadow_maps.h"
 
 #include "realtime/cube_faces.h"
 
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
+#include "realtime/lighting/lighting_shared.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -38,6 +39,12 @@ void setupDepthTexture(gl::Texture& texture, bool compare_filtered) {
 
 }  // namespace
 
+void ShadowMaps::declarePasses(PassDeclarations& passes, std::string_view parent) {
+  passes.add(passPath({parent, kShadowMapPass}), "the scene drawn from a light sample");
+  passes.add(passPath({parent, kShadowMapFilterPass}),
+             "variance shadow maps: the separable box filter of the moments");
+}
+
 ShadowMaps::ShadowMaps(const ShadowSettings& settings, const GpuScene& scene)
     : settings_(settings) {
   const glm::vec3 lo = scene.boundsMin(), hi = scene.boundsMax();
@@ -50,12 +57,12 @@ ShadowMaps::ShadowMaps(const ShadowSettings& settings, const GpuScene& scene)
   const std::string point_defines = kindDefines(LightSampleKind::kPoint, variance);
   const std::string flat_defines = kindDefines(LightSampleKind::kDirectional, variance);
   auto depthProgram = [](const std::string& defines) {
-    return gl::buildProgram({{GL_VERTEX_SHADER, "techniques/direct/shadow.vert.glsl"},
-                             {GL_FRAGMENT_SHADER, "techniques/direct/shadow.frag.glsl"}},
+    return gl::buildProgram({{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
+                             {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
                             defines);
   };
   auto blurProgram = [](const std::string& defines) {
-    return gl::buildProgram({{GL_COMPUTE_SHADER, "techniques/direct/vsm_blur.comp.glsl"}}, defines);
+    return gl::buildProgram({{GL_COMPUTE_SHADER, "realtime/lighting/vsm_blur.comp.glsl"}}, defines);
   };
   depth_point_ = depthProgram(point_defines);
   depth_flat_ = depthProgram(flat_defines);
@@ -100,7 +107,7 @@ glm::mat4 ShadowMaps::flatViewProjection(const LightSample& sample) const {
 void ShadowMaps::render(const GpuScene& scene, const LightSample& sample,
                         gl::PassProfiler& profiler) {
   {
-    auto pass = profiler.pass("shadow map");
+    auto pass = profiler.pass(kShadowMapPass);
     glViewport(0, 0, settings_.size, settings_.size);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -156,7 +163,7 @@ void ShadowMaps::renderFlat(const GpuScene& scene, const LightSample& sample) {
 }
 
 void ShadowMaps::blur(LightSampleKind kind, gl::PassProfiler& profiler) {
-  auto pass = profiler.pass("shadow map filter");
+  auto pass = profiler.pass(kShadowMapFilterPass);
   const bool cube = kind == LightSampleKind::kPoint;
   const gl::Program& program = cube ? blur_point_ : blur_flat_;
   const gl::Texture& moments = cube ? cube_moments_ : flat_moments_;
@@ -164,15 +171,17 @@ void ShadowMaps::blur(LightSampleKind kind, gl::PassProfiler& profiler) {
   program.use();
   glUniform1i(program.uniform("u_radius"), settings_.blur_radius);
   glUniform1i(program.uniform("u_size"), settings_.size);
-  const GLuint groups = GLuint((settings_.size + 7) / 8);
+  const GLuint groups = GLuint((settings_.size + gpu::kVsmBlurGroupSize - 1) / gpu::kVsmBlurGroupSize);
   const GLboolean layered = cube ? GL_TRUE : GL_FALSE;
   // Horizontal into the scratch map, then vertical back.
   const gl::Texture* source[2] = {&moments, &scratch};
   const gl::Texture* destination[2] = {&scratch, &moments};
   const int steps[2][2] = {{1, 0}, {0, 1}};
   for (int i = 0; i < 2; ++i) {
-    glBindImageTexture(0, source[i]->id(), 0, layered, 0, GL_READ_ONLY, GL_RG32F);
-    glBindImageTexture(1, destination[i]->id(), 0, layered, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(gpu::kImageSourceUnit, source[i]->id(), 0, layered, 0, GL_READ_ONLY,
+                       GL_RG32F);
+    glBindImageTexture(gpu::kImageDestinationUnit, destination[i]->id(), 0, layered, 0,
+                       GL_WRITE_ONLY, GL_RG32F);
     glUniform2i(program.uniform("u_step"), steps[i][0], steps[i][1]);
     glDispatchCompute(groups, groups, cube ? 6 : 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -198,9 +207,9 @@ void ShadowMaps::setLookupConstants(const gl::Program& program) const {
 void ShadowMaps::bindForLookup(const gl::Program& program, const LightSample& sample) const {
   const bool cube = sample.kind == LightSampleKind::kPoint;
   if (settings_.filter == ShadowFilter::kVariance)
-    (cube ? cube_moments_ : flat_moments_).bind(2);
+    (cube ? cube_moments_ : flat_moments_).bind(gpu::kShadowMapUnit);
   else
-    (cube ? cube_depth_ : flat_depth_).bind(2);
+    (cube ? cube_depth_ : flat_depth_).bind(gpu::kShadowMapUnit);
   const glm::mat4 view_projection = cube ? glm::mat4(1.0f) : flatViewProjection(sample);
   glProgramUniform3fv(program.id(), program.uniform("u_light_position"), 1,
                       glm::value_ptr(sample.position));

@@ -1,25 +1,40 @@
 // The scene model on the GPU, uploaded once: flat-shaded triangles (positions, geometric normals,
 // material index per vertex), the materials as a shader storage buffer, the camera as a uniform
 // buffer, and the light lists on the CPU side for techniques that place shadow maps or samples.
-//
-// GLSL side (realtime/scene/scene.glsl, included by techniques):
-//   layout(std430, binding = kMaterialBinding) buffer Materials { Material materials[]; };
-//   layout(std140, binding = kCameraBinding) uniform Camera { ... } camera;
-// and realtime/scene/vertex.glsl, included by vertex shaders that draw the scene:
-//   vertex attributes: 0 position (vec3), 1 normal (vec3, unit, (b−a)×(c−a)), 2 material (uint).
+// The layouts the shaders read (materials, camera block, vertex attributes) are declared once in
+// gpu_scene_shared.h; scene.glsl and vertex.glsl are the GLSL side.
 #pragma once
 
 #include "realtime/gl/objects.h"
+#include "realtime/gpu_scene/gpu_scene_shared.h"
 #include "scene/scene.h"
 
 #include <glm/mat4x4.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace gib::rt {
 
-inline constexpr GLuint kMaterialBinding = 0;  // shader storage buffer binding
-inline constexpr GLuint kCameraBinding = 0;    // uniform buffer binding
+// Points the scene's vertex attributes (position, normal, material of gpu_scene_shared.h) of
+// `vertex_array` at `buffer`, an array of `Vertex` records with members of those names, and
+// enables them. Vertex arrays that add attributes (AtlasMesh) set those themselves.
+template <typename Vertex>
+void setSceneVertexAttributes(const gl::VertexArray& vertex_array, const gl::Buffer& buffer) {
+  const GLuint vao = vertex_array.id();
+  glVertexArrayVertexBuffer(vao, 0, buffer.id(), 0, sizeof(Vertex));
+  glVertexArrayAttribFormat(vao, gpu::kVertexPositionLocation, 3, GL_FLOAT, GL_FALSE,
+                            offsetof(Vertex, position));
+  glVertexArrayAttribFormat(vao, gpu::kVertexNormalLocation, 3, GL_FLOAT, GL_FALSE,
+                            offsetof(Vertex, normal));
+  glVertexArrayAttribIFormat(vao, gpu::kVertexMaterialLocation, 1, GL_UNSIGNED_INT,
+                             offsetof(Vertex, material));
+  for (GLuint attribute : {gpu::kVertexPositionLocation, gpu::kVertexNormalLocation,
+                           gpu::kVertexMaterialLocation}) {
+    glVertexArrayAttribBinding(vao, attribute, 0);
+    glEnableVertexArrayAttrib(vao, attribute);
+  }
+}
 
 // The GL camera of a pinhole camera::Camera: the same rays as scene::cameraRayDirection through
 // every pixel centre. Near and far planes enclose the scene's bounds.

@@ -4,15 +4,18 @@
 // is drawn once per frame however many views it lights.
 #pragma once
 
-#include "realtime/gbuffer.h"
-#include "realtime/gl/objects.h"
-#include "realtime/gpu_scene.h"
+#include "common/parameters.h"
+#include "realtime/gbuffer/gbuffer.h"
+#include "realtime/gl/fullscreen_pass.h"
+#include "realtime/gpu_scene/gpu_scene.h"
+#include "realtime/lighting/light_samples.h"
+#include "realtime/lighting/shadow_maps.h"
+#include "realtime/pass_declarations.h"
 #include "realtime/render_target.h"
-#include "realtime/techniques/direct/light_samples.h"
-#include "realtime/techniques/direct/shadow_maps.h"
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gib::rt {
@@ -21,18 +24,29 @@ namespace gl {
 class PassProfiler;
 }
 
+// The passes DirectLighting opens, inside its caller's pass.
+inline constexpr std::string_view kEmissionPass = "emission";
+inline constexpr std::string_view kLightsPass = "lights";
+inline constexpr std::string_view kShadingPass = "shading";  // the camera view's light
+
 // A G-buffer to light and the target its light is added to. `pass` names its shading pass in
-// the profile ("shading" for the camera).
+// the profile, inside kLightsPass (kShadingPass for the camera).
 struct LitView {
   const GBuffer* gbuffer = nullptr;
   const RenderTarget* target = nullptr;
-  std::string pass = "shading";
+  std::string_view pass = kShadingPass;
   bool normals_face_viewer = false;  // a probe view of GBuffer::renderViews
 };
 
 class DirectLighting {
  public:
   DirectLighting(const ShadowSettings& settings, int light_samples);
+
+  // Declares the passes writeEmission and addDirect open under `parent`, with one shading pass
+  // per entry of `view_passes` (name, description) besides the camera's.
+  static void declarePasses(
+      PassDeclarations& passes, std::string_view parent,
+      const std::vector<std::pair<std::string_view, std::string>>& view_passes = {});
 
   // Places the light samples and builds the shadow maps and programs.
   void prepare(const GpuScene& scene);
@@ -41,7 +55,7 @@ class DirectLighting {
   void writeEmission(const GpuScene& scene, const GBuffer& gbuffer, const RenderTarget& target,
                      gl::PassProfiler& profiler);
   // For each light sample: its shadow map, then its light added into every view (additive
-  // blending). Inside a pass named "lights".
+  // blending). Inside a pass named kLightsPass.
   void addDirect(const GpuScene& scene, const std::vector<LitView>& views,
                  gl::PassProfiler& profiler);
 
@@ -51,18 +65,21 @@ class DirectLighting {
   void setLightOffset(const glm::vec3& offset) { light_offset_ = offset; }
 
  private:
-  const gl::Program& shadeProgram(LightSampleKind kind) const {
+  const gl::FullScreenPass& shadePass(LightSampleKind kind) const {
     return kind == LightSampleKind::kPoint ? shade_point_ : shade_directional_;
   }
-  void drawFullScreen(const RenderTarget& target) const;
 
   ShadowSettings shadow_settings_;
   int light_samples_;
   std::vector<LightSample> samples_;
   glm::vec3 light_offset_{0.0f};
   std::optional<ShadowMaps> shadow_maps_;
-  gl::Program emission_, shade_point_, shade_directional_;
-  gl::VertexArray empty_vertex_array_;  // core profile draws need one bound
+  gl::FullScreenPass emission_, shade_point_, shade_directional_;
 };
+
+// The shadow-map parameters (filter, sizes, light samples) of every technique that adds direct
+// light with DirectLighting, and the settings they give.
+ParameterTable directLightingParameters();
+ShadowSettings shadowSettings(const ParameterValues& values);
 
 }  // namespace gib::rt

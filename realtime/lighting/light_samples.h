@@ -4,7 +4,7 @@
 // exact direct illumination, which is what makes `direct` comparable with the reference's LDE.
 #pragma once
 
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "scene/scene.h"
 
 #include <vector>

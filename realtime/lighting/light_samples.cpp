@@ -1,4 +1,4 @@
-#include "realtime/techniques/direct/light_samples.h"
+#include "realtime/lighting/light_samples.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

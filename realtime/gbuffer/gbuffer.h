@@ -3,12 +3,13 @@
 #pragma once
 
 #include "realtime/gl/objects.h"
-#include "realtime/gpu_scene.h"
+#include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <string_view>
 #include <vector>
 
 namespace gib::rt {
@@ -26,6 +27,9 @@ struct GBufferView {
   int x = 0, y = 0, width = 0, height = 0;  // viewport in texels
 };
 
+// The pass GBuffer::render opens when given a profiler.
+inline constexpr std::string_view kGBufferPass = "g-buffer";
+
 class GBuffer {
  public:
   GBuffer(int width, int height);
@@ -39,8 +43,9 @@ class GBuffer {
   const gl::Texture& position() const { return position_; }  // world position, w: ray distance
   const gl::Texture& normal() const { return normal_; }      // unit geometric normal, w: material
   const gl::Texture& albedo() const { return albedo_; }      // material diffuse RGB, w: 1
-  // Binds position, normal, albedo to texture units first, first+1, first+2.
-  void bindTextures(GLuint first) const;
+  // Binds position and normal, what deferred passes read (gbuffer_maps.glsl), to their units of
+  // gl/binding_plan_shared.h.
+  void bindTextures() const;
 
   int width() const { return width_; }
   int height() const { return height_; }

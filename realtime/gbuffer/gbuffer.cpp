@@ -1,5 +1,6 @@
-#include "realtime/gbuffer.h"
+#include "realtime/gbuffer/gbuffer.h"
 
+#include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
 
@@ -28,8 +29,8 @@ GBuffer::GBuffer(int width, int height)
       normal_(gl::Texture::make2D(GL_RGBA32F, width, height)),
       albedo_(gl::Texture::make2D(GL_RGBA32F, width, height)),
       depth_(gl::Texture::make2D(GL_DEPTH_COMPONENT32F, width, height)),
-      program_(gl::buildProgram({{GL_VERTEX_SHADER, "gbuffer/gbuffer.vert.glsl"},
-                                 {GL_FRAGMENT_SHADER, "gbuffer/gbuffer.frag.glsl"}})) {
+      program_(gl::buildProgram({{GL_VERTEX_SHADER, "realtime/gbuffer/gbuffer.vert.glsl"},
+                                 {GL_FRAGMENT_SHADER, "realtime/gbuffer/gbuffer.frag.glsl"}})) {
   // A deferred pass reads texels, never filtered values: blending a surface with the background
   // or with another surface would be a position or normal that nothing has.
   for (gl::Texture* texture : {&position_, &normal_, &albedo_})
@@ -48,7 +49,7 @@ void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
     throw std::logic_error(fmt::format("a {}×{} G-buffer cannot hold a view of a {}×{} camera",
                                        width_, height_, scene.width(), scene.height()));
   std::optional<gl::PassProfiler::Scope> scope;
-  if (profiler) scope.emplace(profiler->pass("g-buffer"));
+  if (profiler) scope.emplace(profiler->pass(kGBufferPass));
 
   clearAndSetState();
   program_.use();
@@ -58,8 +59,8 @@ void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
 
 void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>& views) {
   if (!views_program_.id())
-    views_program_ = gl::buildProgram({{GL_VERTEX_SHADER, "gbuffer/gbuffer.vert.glsl"},
-                                       {GL_FRAGMENT_SHADER, "gbuffer/gbuffer.frag.glsl"}},
+    views_program_ = gl::buildProgram({{GL_VERTEX_SHADER, "realtime/gbuffer/gbuffer.vert.glsl"},
+                                       {GL_FRAGMENT_SHADER, "realtime/gbuffer/gbuffer.frag.glsl"}},
                                       "#define EXPLICIT_VIEW 1\n");
   clearAndSetState();
   views_program_.use();
@@ -91,10 +92,9 @@ void GBuffer::clearAndSetState() const {
   glDisable(GL_BLEND);
 }
 
-void GBuffer::bindTextures(GLuint first) const {
-  position_.bind(first);
-  normal_.bind(first + 1);
-  albedo_.bind(first + 2);
+void GBuffer::bindTextures() const {
+  position_.bind(gpu::kGBufferPositionUnit);
+  normal_.bind(gpu::kGBufferNormalUnit);
 }
 
 }  // namespace gib::rt

@@ -1,0 +1,7 @@
+// The vertex attributes of GpuScene::draw (realtime/gpu_scene/gpu_scene.h), at the locations of
+// gpu_scene_shared.h.
+#include "realtime/gpu_scene/gpu_scene_shared.h"
+
+layout(location = kVertexPositionLocation) in vec3 vertex_position;  // world space
+layout(location = kVertexNormalLocation) in vec3 vertex_normal;      // world space, unit, front side
+layout(location = kVertexMaterialLocation) in uint vertex_material;  // index into materials[]

@@ -1,0 +1,123 @@
+#include "realtime/lighting/direct_lighting.h"
+
+#include "realtime/gl/pass_profiler.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace gib::rt {
+
+namespace {
+
+ShadowFilter parseFilter(const std::string& name) {
+  if (name == "pcf") return ShadowFilter::kPcf;
+  if (name == "vsm") return ShadowFilter::kVariance;
+  return ShadowFilter::kHard;
+}
+
+}  // namespace
+
+ShadowSettings shadowSettings(const ParameterValues& p) {
+  ShadowSettings settings;
+  settings.filter = parseFilter(p.text("shadow"));
+  settings.size = p.integer("shadow_map_size");
+  settings.pcf_radius = p.integer("pcf_radius");
+  settings.normal_offset = float(p.number("normal_offset"));
+  settings.blur_radius = p.integer("vsm_blur_radius");
+  settings.min_variance = float(p.number("vsm_min_variance"));
+  return settings;
+}
+
+ParameterTable directLightingParameters() {
+  return {
+      choiceParameter("shadow", "hard", {"hard", "pcf", "vsm"},
+                      "shadow map filter: nearest comparison, percentage-closer filtering, or "
+                      "variance shadow map"),
+      numericParameter("shadow_map_size", ParameterType::kInteger, "512", 16, 4096, "texels",
+                       "shadow map resolution (each cube face for point lights)"),
+      numericParameter("light_samples", ParameterType::kInteger, "16", 1, 4096, "",
+                       "points over the area lights, and directions over the sky, each with its "
+                       "own shadow map"),
+      numericParameter("pcf_radius", ParameterType::kInteger, "0", 0, 4, "texels",
+                       "PCF: (2r+1)² hardware-filtered comparisons; 0 is the book's 2×2 bilinear"),
+      numericParameter("normal_offset", ParameterType::kNumber, "1", 0, 16, "texels",
+                       "receiver offset along its normal against shadow acne"),
+      numericParameter("vsm_blur_radius", ParameterType::kInteger, "2", 0, 8, "texels",
+                       "variance shadow map box filter radius; 2 is the book's 5×5"),
+      numericParameter("vsm_min_variance", ParameterType::kNumber, "1e-6", 0, 1, "",
+                       "variance floor of the Chebyshev bound, in units of the light range²"),
+  };
+}
+
+void DirectLighting::declarePasses(
+    PassDeclarations& passes, std::string_view parent,
+    const std::vector<std::pair<std::string_view, std::string>>& view_passes) {
+  const std::string lights = passPath({parent, kLightsPass});
+  passes.add(passPath({parent, kEmissionPass}), "emitters and sky seen directly");
+  passes.add(lights, "per light sample: its shadow map, then its light added into every view");
+  ShadowMaps::declarePasses(passes, lights);
+  passes.add(passPath({lights, kShadingPass}), "light added into the camera view");
+  for (const auto& [name, description] : view_passes)
+    passes.add(passPath({lights, name}), description);
+}
+
+DirectLighting::DirectLighting(const ShadowSettings& settings, int light_samples)
+    : shadow_settings_(settings), light_samples_(light_samples) {}
+
+void DirectLighting::prepare(const GpuScene& scene) {
+  // Points on emitters sit a hair in front of them, beyond the cube maps' near plane.
+  const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
+  samples_ = makeLightSamples(scene.scene(), scene.emitters(), light_samples_, light_samples_,
+                              1e-3f * extent);
+  shadow_maps_.emplace(shadow_settings_, scene);
+  emission_ = gl::FullScreenPass("realtime/lighting/emission.frag.glsl");
+  shade_point_ = gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
+                                    shadow_maps_->defines(LightSampleKind::kPoint));
+  shade_directional_ = gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
+                                          shadow_maps_->defines(LightSampleKind::kDirectional));
+  shadow_maps_->setLookupConstants(shade_point_.program());
+  shadow_maps_->setLookupConstants(shade_directional_.program());
+  const gl::Program& emission = emission_.program();
+  glProgramUniform3fv(emission.id(), emission.uniform("u_sky_radiance"), 1,
+                      glm::value_ptr(scene.scene().sky_radiance));
+}
+
+void DirectLighting::writeEmission(const GpuScene& scene, const GBuffer& gbuffer,
+                                   const RenderTarget& target, gl::PassProfiler& profiler) {
+  auto pass = profiler.pass(kEmissionPass);
+  scene.bindSceneBuffers();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  gbuffer.bindTextures();
+  target.bind();
+  emission_.draw();
+}
+
+void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>& views,
+                               gl::PassProfiler& profiler) {
+  auto lights = profiler.pass(kLightsPass);
+  for (LightSample sample : samples_) {
+    if (sample.kind == LightSampleKind::kPoint) sample.position += light_offset_;
+    shadow_maps_->render(scene, sample, profiler);
+    scene.bindSceneBuffers();
+    for (const LitView& view : views) {
+      auto pass = profiler.pass(view.pass);
+      const gl::FullScreenPass& shade = shadePass(sample.kind);
+      const gl::Program& program = shade.program();
+      program.use();
+      view.gbuffer->bindTextures();
+      shadow_maps_->bindForLookup(program, sample);
+      glUniform3fv(program.uniform("u_light_intensity"), 1, glm::value_ptr(sample.intensity));
+      glUniform1f(program.uniform("u_cos_cone"), sample.cos_cone);
+      glUniform1f(program.uniform("u_exponent"), sample.exponent);
+      glUniform1i(program.uniform("u_normals_face_viewer"), view.normals_face_viewer ? 1 : 0);
+      glDisable(GL_DEPTH_TEST);
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);  // each sample adds its share of the direct light
+      view.target->bind();
+      shade.draw();
+      glDisable(GL_BLEND);
+    }
+  }
+}
+
+}  // namespace gib::rt

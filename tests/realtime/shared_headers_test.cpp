@@ -1,0 +1,146 @@
+// The headers C++ and GLSL share (`*_shared.h`, docs/architecture.md "Declared GPU layouts"):
+// all of them compile together on both sides (one namespace in C++, one global scope in GLSL, so
+// a clash fails here), and the constants and functions the GPU evaluates equal the C++ ones.
+#include "common/luminance_shared.h"
+#include "realtime/gl/binding_plan_shared.h"
+#include "realtime/gl/shader_library.h"
+#include "realtime/gpu_scene/gpu_scene_shared.h"
+#include "realtime/lighting/lighting_shared.h"
+#include "realtime/sh/spherical_harmonics_shared.h"
+#include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
+#include "support/gl_test_context.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gib::rt {
+namespace {
+
+class SharedHeaders : public test::GlTest {};
+
+// Every embedded shared header, so that a new one is covered without editing this test.
+std::vector<std::string> sharedHeaders() {
+  std::vector<std::string> paths;
+  for (const EmbeddedFile& file : gl::embeddedShaderFiles())
+    if (file.path.ends_with("_shared.h")) paths.emplace_back(file.path);
+  return paths;
+}
+
+TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
+  // This file includes each by hand (C++ has no glob): a new header goes above and here.
+  const std::set<std::string> included = {
+      "common/luminance_shared.h",
+      "realtime/gl/binding_plan_shared.h",
+      "realtime/gl/host_device_shared.h",
+      "realtime/gpu_scene/gpu_scene_shared.h",
+      "realtime/lighting/lighting_shared.h",
+      "realtime/sh/spherical_harmonics_shared.h",
+      "realtime/techniques/irradiance_volume/irradiance_volume_shared.h",
+      "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"};
+  const std::vector<std::string> embedded = sharedHeaders();
+  EXPECT_EQ(std::set<std::string>(embedded.begin(), embedded.end()), included);
+}
+
+// The GPU's values of a list of integer expressions, in order.
+std::vector<int> evaluateOnGpu(const std::vector<std::string>& expressions) {
+  std::string source;
+  for (const std::string& header : sharedHeaders()) source += "#include \"" + header + "\"\n";
+  source +=
+      "layout(local_size_x = 1) in;\n"
+      "layout(std430, binding = kTestFirstStorageBinding) buffer Results { int results[]; };\n"
+      "void main() {\n";
+  for (std::size_t i = 0; i < expressions.size(); ++i)
+    source += "  results[" + std::to_string(i) + "] = " + expressions[i] + ";\n";
+  source += "}\n";
+  const gl::Program program = gl::buildProgram(
+      {{GL_COMPUTE_SHADER, "test/shared.comp.glsl"}}, "",
+      [&](std::string_view path) -> std::string_view {
+        return path == "test/shared.comp.glsl" ? std::string_view(source) : gl::glslFile(path);
+      });
+  std::vector<int> results(expressions.size(), -12345);
+  const gl::Buffer buffer = gl::Buffer::fromVector(results);
+  buffer.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTestFirstStorageBinding);
+  program.use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(results.size() * sizeof(int)),
+                          results.data());
+  return results;
+}
+
+TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
+  using namespace gpu;
+  const std::vector<std::pair<std::string, int>> cases = {
+      {"kGBufferNormalUnit", kGBufferNormalUnit},
+      {"kShadowMapUnit", kShadowMapUnit},
+      {"kAtlasEmissionUnit", kAtlasEmissionUnit},
+      {"kMaterialsBinding", kMaterialsBinding},
+      {"kCameraBinding", kCameraBinding},
+      {"kMaterialPhong", kMaterialPhong},
+      {"kVertexAtlasUvLocation", kVertexAtlasUvLocation},
+      {"kVsmBlurGroupSize", kVsmBlurGroupSize},
+      {"kShMaxCoefficients", kShMaxCoefficients},
+      {"shCoefficientCount(1)", shCoefficientCount(1)},
+      {"shBand(8)", shBand(8)},
+      {"shBand(9)", shBand(9)},
+      {"kProbeCoefficientsBinding", kProbeCoefficientsBinding},
+      {"kProjectionWeightsBinding", kProjectionWeightsBinding},
+      {"probeCoefficientIndex(3, 5)", probeCoefficientIndex(3, 5)},
+      {"probeTile(7, 4)", probeTile(7, 4)},
+      {"tileOrigin(probeTile(7, 4), 9, 16).x", tileOrigin(probeTile(7, 4), 9, 16).x},
+      {"tileOrigin(probeTile(7, 4), 9, 16).y", tileOrigin(probeTile(7, 4), 9, 16).y},
+      {"kShootersBinding", kShootersBinding},
+      {"kVisibilityUnit", kVisibilityUnit},
+      {"kDescentGroupSize", kDescentGroupSize},
+      {"int(luminance(vec3(1.0, 0.0, 0.0)) * 1e4 + 0.5)", int(kLuminanceRed * 1e4 + 0.5)},
+  };
+  std::vector<std::string> expressions;
+  for (const auto& [expression, value] : cases) expressions.push_back(expression);
+  const std::vector<int> gpu_values = evaluateOnGpu(expressions);
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    EXPECT_EQ(gpu_values[i], cases[i].second) << cases[i].first;
+}
+
+// The offsets and array strides of the shared structs as the driver lays them out (std430
+// storage, std140 uniform block) are the C++ structs' own, so a record written by one side is
+// read field for field by the other.
+TEST_F(SharedHeaders, SharedStructsHaveTheCppLayoutInTheDriver) {
+  const std::string source =
+      "#include \"realtime/gpu_scene/scene.glsl\"\n"
+      "#include \"realtime/techniques/stochastic_radiosity/selection.glsl\"\n"
+      "layout(local_size_x = 1) in;\n"
+      "void main() {\n"
+      "  shooters[0].u = materials[0].emission.x + camera.position.x + camera.image_size.y;\n"
+      "  shooters[1].power = materials[1].specular_exponent.w;\n"
+      "}\n";
+  const gl::Program program = gl::buildProgram(
+      {{GL_COMPUTE_SHADER, "test/layout.comp.glsl"}}, "",
+      [&](std::string_view path) -> std::string_view {
+        return path == "test/layout.comp.glsl" ? std::string_view(source) : gl::glslFile(path);
+      });
+  auto property = [&](GLenum interface, const char* name, GLenum what) {
+    const GLuint index = glGetProgramResourceIndex(program.id(), interface, name);
+    EXPECT_NE(index, GL_INVALID_INDEX) << name;
+    GLint value = -1;
+    glGetProgramResourceiv(program.id(), interface, index, 1, &what, 1, nullptr, &value);
+    return std::size_t(value);
+  };
+  EXPECT_EQ(property(GL_BUFFER_VARIABLE, "shooters[0].u", GL_OFFSET), offsetof(gpu::Shooter, u));
+  EXPECT_EQ(property(GL_BUFFER_VARIABLE, "shooters[0].power", GL_TOP_LEVEL_ARRAY_STRIDE),
+            sizeof(gpu::Shooter));
+  EXPECT_EQ(property(GL_BUFFER_VARIABLE, "materials[0].emission", GL_OFFSET),
+            offsetof(gpu::Material, emission));
+  EXPECT_EQ(property(GL_BUFFER_VARIABLE, "materials[0].specular_exponent",
+                     GL_TOP_LEVEL_ARRAY_STRIDE),
+            sizeof(gpu::Material));
+  EXPECT_EQ(property(GL_UNIFORM, "camera.position", GL_OFFSET), offsetof(gpu::Camera, position));
+  EXPECT_EQ(property(GL_UNIFORM, "camera.image_size", GL_OFFSET),
+            offsetof(gpu::Camera, image_size));
+}
+
+}  // namespace
+}  // namespace gib::rt
