@@ -4,8 +4,8 @@
 #include "cli/commands.h"
 #include "cli/history_location.h"
 #include "common/input_error.h"
-#include "reports/results_diff.h"
-#include "reports/results_json.h"
+#include "results/results_diff.h"
+#include "results/results_json.h"
 
 #include <fmt/format.h>
 
@@ -36,19 +36,19 @@ std::optional<std::int64_t> parseRowNumber(const std::string& text) {
 
 // A path when it names something on disk or looks like one; otherwise a run of the history
 // database, by row number or run id.
-reports::RunResults resolveRun(const std::string& argument, const HistoryLocation& history) {
+results::RunResults resolveRun(const std::string& argument, const HistoryLocation& history) {
   std::error_code ec;
   const bool looks_like_path =
       argument.find('/') != std::string::npos || fs::path(argument).extension() == ".json";
-  if (fs::exists(argument, ec) || looks_like_path) return reports::readResultsFile(argument);
+  if (fs::exists(argument, ec) || looks_like_path) return results::readResultsFile(argument);
   if (!fs::exists(history.path(), ec))
     throw InputError(fmt::format(
         "'{}' is not a file, and there is no history database at '{}' to look it up in; give a "
         "results.json or a run directory, or choose the database with --db FILE or --store DIR",
         argument, history.path().string()));
-  const reports::HistoryDatabase db = history.openExisting();
+  const results::HistoryDatabase db = history.openExisting();
   const std::optional<std::int64_t> row = parseRowNumber(argument);
-  std::optional<reports::RunResults> run = row ? db.run(*row) : db.run(argument);
+  std::optional<results::RunResults> run = row ? db.run(*row) : db.run(argument);
   if (!run)
     throw InputError(fmt::format(
         "'{}' is neither a file nor a run in the history database '{}'; `gibench history` lists "
@@ -58,13 +58,13 @@ reports::RunResults resolveRun(const std::string& argument, const HistoryLocatio
 }
 
 int runDiff(const DiffOptions& o) {
-  const reports::RunResults base = resolveRun(o.base, o.history);
-  const reports::RunResults next = resolveRun(o.next, o.history);
-  const reports::DiffReport diff = reports::diffResults(base, next);
+  const results::RunResults base = resolveRun(o.base, o.history);
+  const results::RunResults next = resolveRun(o.next, o.history);
+  const results::DiffReport diff = results::diffResults(base, next);
   if (o.json)
-    fmt::print("{}\n", reports::diffJson(diff).dump());
+    fmt::print("{}\n", results::diffJson(diff).dump());
   else
-    fmt::print("{}", reports::formatDiff(diff));
+    fmt::print("{}", results::formatDiff(diff));
   return diff.regressions() > 0 ? 1 : 0;
 }
 

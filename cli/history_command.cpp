@@ -4,7 +4,7 @@
 #include "cli/commands.h"
 #include "cli/history_location.h"
 #include "cli/text_table.h"
-#include "reports/json_number.h"
+#include "results/json_number.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -19,16 +19,16 @@ using json = nlohmann::ordered_json;
 
 struct HistoryOptions {
   HistoryLocation location;
-  reports::HistoryFilter filter;
+  results::HistoryFilter filter;
   bool json = false;
 };
 
 // A commit as people quote it: the first 12 hex digits, marked when the build was dirty.
-std::string shortCommit(const reports::RunSummary& run) {
+std::string shortCommit(const results::RunSummary& run) {
   return run.git_commit.substr(0, 12) + (run.git_dirty ? "+dirty" : "");
 }
 
-json summaryJson(const reports::RunSummary& run) {
+json summaryJson(const results::RunSummary& run) {
   return {{"row", run.row},
           {"id", run.id},
           {"suite", run.suite},
@@ -40,15 +40,15 @@ json summaryJson(const reports::RunSummary& run) {
           {"jobs", run.jobs}};
 }
 
-void printRuns(const std::vector<reports::RunSummary>& runs, const HistoryOptions& o) {
+void printRuns(const std::vector<results::RunSummary>& runs, const HistoryOptions& o) {
   if (o.json) {
     json list = json::array();
-    for (const reports::RunSummary& run : runs) list.push_back(summaryJson(run));
+    for (const results::RunSummary& run : runs) list.push_back(summaryJson(run));
     fmt::print("{}\n", json{{"database", o.location.path().string()}, {"runs", list}}.dump());
     return;
   }
   std::vector<std::vector<std::string>> rows;
-  for (const reports::RunSummary& run : runs)
+  for (const results::RunSummary& run : runs)
     rows.push_back({std::to_string(run.row), run.id, run.suite, run.started, shortCommit(run),
                     run.host, run.gl_renderer.empty() ? "-" : run.gl_renderer,
                     std::to_string(run.jobs)});
@@ -58,16 +58,16 @@ void printRuns(const std::vector<reports::RunSummary>& runs, const HistoryOption
   if (runs.empty()) fmt::print("no recorded run matches\n");
 }
 
-void printValues(const std::vector<reports::MetricPoint>& points, const HistoryOptions& o) {
+void printValues(const std::vector<results::MetricPoint>& points, const HistoryOptions& o) {
   if (o.json) {
     json list = json::array();
-    for (const reports::MetricPoint& p : points) {
+    for (const results::MetricPoint& p : points) {
       json entry = summaryJson(p.run);
       entry.erase("jobs");
       entry.update(json{{"job", p.job},
                         {"scene", p.scene},
                         {"technique", p.technique},
-                        {"value", reports::numberToJson(p.value)}});
+                        {"value", results::numberToJson(p.value)}});
       list.push_back(std::move(entry));
     }
     fmt::print("{}\n", json{{"database", o.location.path().string()},
@@ -77,7 +77,7 @@ void printValues(const std::vector<reports::MetricPoint>& points, const HistoryO
     return;
   }
   std::vector<std::vector<std::string>> rows;
-  for (const reports::MetricPoint& p : points)
+  for (const results::MetricPoint& p : points)
     rows.push_back({std::to_string(p.run.row), p.run.started, shortCommit(p.run), p.job,
                     fmt::format("{:.6g}", p.value)});
   fmt::print("{}", formatTable({"row", "started", "commit", "job", o.filter.metric}, rows));
@@ -85,7 +85,7 @@ void printValues(const std::vector<reports::MetricPoint>& points, const HistoryO
 }
 
 int runHistory(const HistoryOptions& o) {
-  const reports::HistoryDatabase db = o.location.openExisting();
+  const results::HistoryDatabase db = o.location.openExisting();
   if (o.filter.metric.empty())
     printRuns(db.runs(o.filter), o);
   else
@@ -97,7 +97,7 @@ int runHistory(const HistoryOptions& o) {
 
 CommandRunner addHistoryCommand(CLI::App& app) {
   auto o = std::make_shared<HistoryOptions>();
-  reports::HistoryFilter& f = o->filter;
+  results::HistoryFilter& f = o->filter;
   CLI::App* history = app.add_subcommand(
       "history", "List recorded runs, or a metric's values across runs, from the history database");
   o->location.addOptions(*history);

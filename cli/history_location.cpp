@@ -19,7 +19,7 @@ std::filesystem::path HistoryLocation::path() const {
   return historyDatabasePath(store.empty() ? defaultStoreRoot() : std::filesystem::path(store));
 }
 
-reports::HistoryDatabase HistoryLocation::openExisting() const {
+results::HistoryDatabase HistoryLocation::openExisting() const {
   const std::filesystem::path file = path();
   std::error_code ec;
   if (!std::filesystem::exists(file, ec))
@@ -27,7 +27,7 @@ reports::HistoryDatabase HistoryLocation::openExisting() const {
         "no run has been recorded in '{}' (no history database there); choose one with --db FILE "
         "or --store DIR",
         file.string()));
-  return reports::HistoryDatabase::open(file);
+  return results::HistoryDatabase::open(file);
 }
 
 }  // namespace gib::cli

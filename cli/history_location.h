@@ -2,7 +2,7 @@
 // DIR, else that of the default store (common/cache_paths.h). Reading commands never create one.
 #pragma once
 
-#include "reports/history_db.h"
+#include "results/history_db.h"
 
 #include <CLI/CLI.hpp>
 
@@ -20,7 +20,7 @@ struct HistoryLocation {
   std::filesystem::path path() const;
   // Opens the database for reading; a gib::InputError saying that no run has been recorded
   // there, and how to choose another, when the file does not exist.
-  reports::HistoryDatabase openExisting() const;
+  results::HistoryDatabase openExisting() const;
 };
 
 }  // namespace gib::cli

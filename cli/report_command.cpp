@@ -7,7 +7,7 @@
 #include "common/input_error.h"
 #include "reports/html_report.h"
 #include "reports/report_context.h"
-#include "reports/results_json.h"
+#include "results/results_json.h"
 
 #include <fmt/format.h>
 
@@ -40,7 +40,7 @@ void checkRunDirectory(const fs::path& dir) {
 // The previous run of the suite and its recent runs from the history database: the one chosen
 // with --db or --store, else the one of the store the run used. A database the user did not
 // choose may be absent (no run recorded yet): the report then compares with nothing.
-reports::ReportContext historyContext(const reports::RunResults& results, HistoryLocation location,
+reports::ReportContext historyContext(const results::RunResults& results, HistoryLocation location,
                                       std::size_t trend_runs) {
   const bool chosen = !location.db.empty() || !location.store.empty();
   if (!chosen) location.store = results.run.store;
@@ -56,7 +56,7 @@ reports::ReportContext historyContext(const reports::RunResults& results, Histor
 int runReport(const ReportOptions& o) {
   const fs::path dir = o.dir;
   checkRunDirectory(dir);
-  const reports::RunResults results = reports::readResultsFile(dir / "results.json");
+  const results::RunResults results = results::readResultsFile(dir / "results.json");
   const reports::ReportContext context = historyContext(results, o.history, o.trend_runs);
   fmt::print("{}\n", reports::writeHtmlReport(dir, results, context).string());
   return 0;

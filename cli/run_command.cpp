@@ -4,6 +4,9 @@
 #include "common/cache_paths.h"
 #include "common/input_error.h"
 #include "common/progress.h"
+#include "reports/html_report.h"
+#include "reports/report_context.h"
+#include "results/history_db.h"
 #include "suites/run_environment.h"
 #include "suites/suite_file.h"
 #include "suites/suite_runner.h"
@@ -39,13 +42,24 @@ fs::path defaultOutDir(const std::string& suite) {
   return fs::path("runs") / fmt::format("{}-{}-{}", suite, stamp.substr(0, 8), stamp.substr(8));
 }
 
-void printSummary(const suites::RunOutcome& outcome) {
-  const reports::RunResults& run = outcome.results;
+// The run's report, compared with the suite's earlier runs in the history database it was
+// recorded in (none without one).
+fs::path writeReport(const suites::RunOutcome& outcome, const suites::RunOptions& options,
+                     int trend_runs) {
+  reports::ReportContext context;
+  if (!options.history_db.empty())
+    context = reports::loadReportContext(results::HistoryDatabase::open(options.history_db),
+                                         outcome.results, std::size_t(trend_runs));
+  return reports::writeHtmlReport(outcome.run_dir, outcome.results, context);
+}
+
+void printSummary(const suites::RunOutcome& outcome, const fs::path& report) {
+  const results::RunResults& run = outcome.results;
   const std::string metric = run.primary_metric.empty() ? "metric" : run.primary_metric;
   fmt::print("{:<44} {:>12} {:>12} {:>10} {:>8}\n", "job", metric, "full " + metric, "frame ms",
              "seconds");
-  for (const reports::JobResult& job : run.jobs) {
-    auto value = [&](const reports::NamedValues& values) {
+  for (const results::JobResult& job : run.jobs) {
+    auto value = [&](const results::NamedValues& values) {
       for (const auto& [name, v] : values)
         if (name == run.primary_metric) return fmt::format("{:.4g}", v);
       return std::string("-");
@@ -57,7 +71,7 @@ void printSummary(const suites::RunOutcome& outcome) {
   fmt::print("jobs       {} run, {} finished earlier\n", outcome.ran, outcome.skipped);
   fmt::print("results    {}\n", outcome.results_file.string());
   if (outcome.history_row > 0) fmt::print("history    run {}\n", outcome.history_row);
-  fmt::print("report     {}\n", outcome.report.string());
+  fmt::print("report     {}\n", report.string());
 }
 
 int runRun(const RunCommandOptions& o) {
@@ -80,8 +94,8 @@ int runRun(const RunCommandOptions& o) {
   options.only = o.only;
   options.gl_device = o.gl_device;
   options.progress = ProgressBar::stderrIsTerminal();
-  options.trend_runs = o.trend_runs;
-  printSummary(suites::runSuite(suite, options));
+  const suites::RunOutcome outcome = suites::runSuite(suite, options);
+  printSummary(outcome, writeReport(outcome, options, o.trend_runs));
   return 0;
 }
 

@@ -6,8 +6,9 @@
 #include "gib/reference_renderer_version.h"
 #include "reference/reference_store.h"
 #include "reference/reference_store_entry.h"
-#include "reports/history_db.h"
+#include "results/history_db.h"
 #include "scene/path_class.h"
+#include "suites/store_verification.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -141,12 +142,13 @@ int runList(const StoreOptions& o) {
 // --- store verify ----------------------------------------------------------------------------
 
 // A scene that no longer loads (a moved scene file) fails its entry rather than the command.
-ref::VerifyResult verifyEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
-                              const StoreOptions& o) {
+suites::VerifyResult verifyEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
+                                 const StoreOptions& o) {
   try {
-    return store.verify(entry, std::uint32_t(o.spp), o.significance, /*progress=*/true);
+    return suites::verifyStoreEntry(store, entry, std::uint32_t(o.spp), o.significance,
+                                    /*progress=*/true);
   } catch (const InputError& e) {
-    ref::VerifyResult failed;
+    suites::VerifyResult failed;
     failed.key = entry.key;
     failed.problem = fmt::format("cannot load the scene: {}", e.what());
     return failed;
@@ -154,12 +156,8 @@ ref::VerifyResult verifyEntry(const ref::ReferenceStore& store, const ref::Store
 }
 
 int runVerify(const StoreOptions& o) {
-  if (o.spp < 2)
-    throw InputError(fmt::format(
-        "--spp {} gives the fresh render no variance; the Z-test needs at least 2", o.spp));
-  if (!(o.significance > 0 && o.significance < 1))
-    throw InputError(
-        fmt::format("--significance {} is not in (0, 1); 0.01 is usual", o.significance));
+  // Before anything is read: bad settings are one error, not one failure per entry.
+  suites::checkVerifySettings(o.spp, o.significance);
   const ref::ReferenceStore store = openStore(o);
   std::vector<ref::StoreEntry> entries = store.list();
   if (!o.prefixes.empty()) {
@@ -176,7 +174,7 @@ int runVerify(const StoreOptions& o) {
   std::size_t failed = 0;
   ordered_json results = ordered_json::array();
   for (const ref::StoreEntry& entry : entries) {
-    const ref::VerifyResult r = verifyEntry(store, entry, o);
+    const suites::VerifyResult r = verifyEntry(store, entry, o);
     failed += !r.passed;
     if (o.json) {
       results.push_back({{"key", r.key},
@@ -219,7 +217,7 @@ std::set<std::string> keysInUse(const std::vector<std::string>& kept_keys,
   // Opened only when it exists: opening creates a database, and gc must not leave one behind.
   std::error_code ec;
   if (fs::is_regular_file(history_db, ec))
-    keys.merge(reports::HistoryDatabase::open(history_db).referenceKeys());
+    keys.merge(results::HistoryDatabase::open(history_db).referenceKeys());
   return keys;
 }
 

@@ -9,6 +9,7 @@
 #include "realtime/technique_output.h"
 #include "realtime/technique_runner.h"
 #include "reference/reference_output.h"
+#include "results/results_json.h"
 #include "scene/builtin_scenes.h"
 
 #include <fmt/format.h>
@@ -44,14 +45,14 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   settings.context.debug = rt::gl::debugOutputByDefault();
 
   const rt::TechniqueRunResult result = rt::runTechnique(scene, info, parameters, settings);
-  const std::vector<metrics::PassTimingRow> rows = metrics::summarizeProfile(result.profile);
-  const nlohmann::ordered_json timings = metrics::passTimingsJson(result.profile, rows);
+  const metrics::PassTimings timings = metrics::summarizeProfile(result.profile);
 
   image::Metadata metadata = rt::techniqueOutputMetadata(scene, info, parameters, settings, result,
-                                                         rows.front().reported.median);
+                                                         timings.root().reported.median);
   metadata["gibench/peak_rss_mb"] = fmt::format("{:.1f}", ref::peakResidentMegabytes());
   const rt::TechniqueOutputFiles files = rt::writeTechniqueOutputs(out, result, metadata);
-  if (!o.timings_json.empty()) image::writeTextFile(o.timings_json, timings.dump(2) + "\n");
+  if (!o.timings_json.empty())
+    image::writeTextFile(o.timings_json, results::passTimingsToJson(timings).dump(2) + "\n");
 
   fmt::print("scene      {} (hash {})\n", scene.name, metadata.at("gibench/scene_hash"));
   fmt::print("technique  {} {}\n", info.name,
@@ -62,11 +63,10 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
              result.gl.version, result.gl.device);
   fmt::print("prepare    upload {:.1f} ms, prepare {:.1f} ms\n", result.upload_ms,
              result.prepare_ms);
-  fmt::print("{}", metrics::formatPassTable(result.profile, rows));
+  fmt::print("{}", metrics::formatPassTable(timings));
   if (!result.iteration_profile.passes.empty() && result.iteration_profile.measured_frames > 0) {
     fmt::print("iterations {} in {:.1f} ms\n", result.iterations, result.iterate_ms);
-    fmt::print("{}", metrics::formatPassTable(result.iteration_profile,
-                                              metrics::summarizeProfile(result.iteration_profile)));
+    fmt::print("{}", metrics::formatPassTable(metrics::summarizeProfile(result.iteration_profile)));
   }
   for (const rt::TechniqueStatistic& statistic : result.statistics)
     fmt::print("{:<10} {:g}\n", statistic.name, statistic.value);

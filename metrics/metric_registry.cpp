@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 
@@ -20,6 +21,22 @@ struct MetricEntry {
   MetricInfo info;
   Evaluator evaluate;
 };
+
+constexpr MetricDirection kLower = MetricDirection::kLowerIsBetter;
+constexpr MetricDirection kHigher = MetricDirection::kHigherIsBetter;
+
+// The values of one figure named like its metric.
+std::vector<MetricValueInfo> single(const char* name, MetricDirection direction = kLower) {
+  return {{name, direction}};
+}
+
+// FLIP's values (addFlip), all errors.
+std::vector<MetricValueInfo> flipValues(const std::string& prefix) {
+  std::vector<MetricValueInfo> values;
+  for (const char* suffix : {"_mean", "_median", "_q1", "_q3", "_max"})
+    values.push_back({prefix + suffix, kLower});
+  return values;
+}
 
 // A metric with one figure and a map under its own name.
 Evaluator scalar(
@@ -46,37 +63,42 @@ void addFlip(const std::string& prefix, FlipResult flip, MetricReport& report) {
 
 const std::vector<MetricEntry>& entries() {
   static const std::vector<MetricEntry> table = {
-      {{"mse", "mean squared error of linear RGB"},
+      {{"mse", "mean squared error of linear RGB", single("mse")},
        scalar("mse", [](auto& r, auto& t, auto&) { return computeMse(r, t); })},
-      {{"rmse", "root mean squared error of linear RGB"},
+      {{"rmse", "root mean squared error of linear RGB", single("rmse")},
        scalar("rmse", [](auto& r, auto& t, auto&) { return computeRmse(r, t); })},
-      {{"mae", "mean absolute error of linear RGB"},
+      {{"mae", "mean absolute error of linear RGB", single("mae")},
        scalar("mae", [](auto& r, auto& t, auto&) { return computeMae(r, t); })},
       {{"relmse",
-        "relative MSE (x-r)^2/(r^2+eps), eps = 0.01; --reject-outliers drops the top 0.1%"},
+        "relative MSE (x-r)^2/(r^2+eps), eps = 0.01; --reject-outliers drops the top 0.1%",
+        single("relmse")},
        scalar("relmse",
               [](auto& r, auto& t, auto& o) {
                 return computeRelMse(r, t, o.relative_epsilon, o.reject_outliers);
               })},
-      {{"mape", "mean absolute percentage error |x-r|/(|r|+eps)"},
+      {{"mape", "mean absolute percentage error |x-r|/(|r|+eps)", single("mape")},
        scalar("mape",
               [](auto& r, auto& t, auto& o) { return computeMape(r, t, o.relative_epsilon); })},
-      {{"smape", "symmetric MAPE 2|x-r|/(|x|+|r|+eps)"},
+      {{"smape", "symmetric MAPE 2|x-r|/(|x|+|r|+eps)", single("smape")},
        scalar("smape",
               [](auto& r, auto& t, auto& o) { return computeSmape(r, t, o.relative_epsilon); })},
-      {{"psnr", "PSNR in dB after clamping to [0,1] and the sRGB curve"},
+      {{"psnr", "PSNR in dB after clamping to [0,1] and the sRGB curve", single("psnr", kHigher)},
        scalar("psnr", [](auto& r, auto& t, auto&) { return computePsnr(r, t); })},
       {{"energy",
         "energy_ratio: mean luminance of the image over the reference's (1 = no light "
-        "lost or gained)"},
+        "lost or gained)",
+        single("energy_ratio", MetricDirection::kTowardOne)},
        scalar("energy_ratio", [](auto& r, auto& t, auto&) { return computeEnergyRatio(r, t); })},
-      {{"ssim", "SSIM of display luminance (11x11 Gaussian window, sigma 1.5)"},
+      {{"ssim", "SSIM of display luminance (11x11 Gaussian window, sigma 1.5)",
+        single("ssim", kHigher)},
        scalar("ssim", [](auto& r, auto& t, auto&) { return computeSsim(r, t); })},
-      {{"flip", "LDR-FLIP (Andersson et al. 2020): mean, weighted median and quartiles, max"},
+      {{"flip", "LDR-FLIP (Andersson et al. 2020): mean, weighted median and quartiles, max",
+        flipValues("flip")},
        [](auto& r, auto& t, auto& o, MetricReport& report) {
          addFlip("flip", computeLdrFlip(r, t, o.flip), report);
        }},
-      {{"hdrflip", "HDR-FLIP (Andersson et al. 2021): mean, weighted median and quartiles, max"},
+      {{"hdrflip", "HDR-FLIP (Andersson et al. 2021): mean, weighted median and quartiles, max",
+        flipValues("hdrflip")},
        [](auto& r, auto& t, auto& o, MetricReport& report) {
          addFlip("hdrflip", computeHdrFlip(r, t, o.flip), report);
        }},
@@ -93,6 +115,26 @@ const std::vector<MetricInfo>& metricCatalogue() {
     return result;
   }();
   return infos;
+}
+
+const MetricValueInfo* findMetricValue(std::string_view value_name) {
+  for (const MetricEntry& e : entries())
+    for (const MetricValueInfo& value : e.info.values)
+      if (value.name == value_name) return &value;
+  return nullptr;
+}
+
+double distanceFromIdeal(std::string_view value_name, double value) {
+  const MetricValueInfo* info = findMetricValue(value_name);
+  switch (info ? info->direction : kLower) {
+    case MetricDirection::kLowerIsBetter:
+      return value;
+    case MetricDirection::kHigherIsBetter:
+      return -value;
+    case MetricDirection::kTowardOne:
+      return std::abs(value - 1.0);
+  }
+  return value;
 }
 
 std::vector<std::string> parseMetricList(std::string_view list) {

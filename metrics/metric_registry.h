@@ -1,5 +1,7 @@
 // One place turns metric names into measurements: `gibench compare --metrics`, `gibench list
-// metrics` and (later) the harness read this table.
+// metrics`, suites and the harness read this table. It also declares each value a metric reports
+// ("flip" reports flip_mean, flip_median, …) and which way is better, which `gibench diff`, the
+// report's colours and suite tolerances rely on.
 #pragma once
 
 #include "image/image.h"
@@ -19,13 +21,34 @@ struct MetricOptions {
   FlipViewingConditions flip;
 };
 
+// Which way a value improves.
+enum class MetricDirection {
+  kLowerIsBetter,   // errors: MSE, relMSE, FLIP
+  kHigherIsBetter,  // similarities: PSNR, SSIM
+  kTowardOne,       // ratios whose ideal is 1: energy_ratio
+};
+
+struct MetricValueInfo {
+  std::string name;  // "flip_mean"
+  MetricDirection direction = MetricDirection::kLowerIsBetter;
+};
+
 struct MetricInfo {
   std::string name;
   std::string description;
+  std::vector<MetricValueInfo> values;  // what it reports, in report order
 };
 
 // Every metric, in report order.
 const std::vector<MetricInfo>& metricCatalogue();
+
+// The declared value of this name ("relmse", "flip_mean"), or nullptr.
+const MetricValueInfo* findMetricValue(std::string_view value_name);
+
+// How far a value is from ideal, in the value's own units: the value for errors, its negation
+// for similarities, |value − 1| for ratios. A change is an improvement when it lowers this. A name
+// no metric declares (a value of a metric since removed) is taken as an error.
+double distanceFromIdeal(std::string_view value_name, double value);
 
 // "all" or a comma-separated list of names; throws gib::InputError naming an unknown metric and
 // listing the known ones.

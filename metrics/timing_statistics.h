@@ -15,6 +15,7 @@ struct TimingSummary {
   double minimum = 0;
   double maximum = 0;
   double median_absolute_deviation = 0;  // median |x − median|, unscaled
+  bool operator==(const TimingSummary&) const = default;
 };
 
 // Throws std::invalid_argument for an empty sample.

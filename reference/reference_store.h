@@ -66,15 +66,6 @@ struct StoredReference {
   bool hit = false;       // found rather than rendered by this call
 };
 
-struct VerifyResult {
-  std::string key;
-  bool passed = false;
-  std::string problem;  // why not: "scene changed (hash …)", "Z-test: 123 of 49152 values fail"
-  std::size_t tested = 0, failing = 0;
-  double min_p_value = 1;
-  double seconds = 0;
-};
-
 struct GcResult {
   std::vector<StoreEntry> removed;            // or would be, with dry_run
   std::vector<std::filesystem::path> debris;  // temporary directories of interrupted writes
@@ -100,12 +91,6 @@ class ReferenceStore {
 
   // Every entry, newest first. An unreadable entry.json throws gib::InputError naming it.
   std::vector<StoreEntry> list() const;
-
-  // Re-renders the entry's scene at `spp` samples with a seed of its own and Z-tests it against
-  // the stored mean and variance at family-wise `significance` (metrics/z_test.h): a changed
-  // renderer or scene fails. Throws gib::InputError when the scene cannot be loaded.
-  VerifyResult verify(const StoreEntry& entry, std::uint32_t spp, double significance = 0.01,
-                      bool progress = false) const;
 
   // Removes the entries whose key is not in `keep`, and the debris of interrupted writes.
   GcResult collectGarbage(const std::set<std::string>& keep, bool dry_run) const;

@@ -19,9 +19,9 @@ namespace fs = std::filesystem;
 
 // Slugs become file names under report/: a hand-edited results.json must not write elsewhere or
 // let two jobs share a page.
-void checkSlugs(const RunResults& results) {
+void checkSlugs(const results::RunResults& results) {
   std::set<std::string> seen;
-  for (const JobResult& job : results.jobs) {
+  for (const results::JobResult& job : results.jobs) {
     const std::string& slug = job.slug;
     if (slug.empty() || slug == "." || slug == ".." ||
         slug.find_first_of(std::string("/\\\0", 3)) != std::string::npos)
@@ -39,7 +39,7 @@ void checkSlugs(const RunResults& results) {
 
 }  // namespace
 
-fs::path writeHtmlReport(const fs::path& run_dir, const RunResults& results,
+fs::path writeHtmlReport(const fs::path& run_dir, const results::RunResults& results,
                          const ReportContext& context) {
   checkSlugs(results);
   std::error_code ec;
@@ -55,7 +55,7 @@ fs::path writeHtmlReport(const fs::path& run_dir, const RunResults& results,
 
   const RunComparison comparison(results, context.previous);
   // Job pages first: index.html never links to a page that is not there yet.
-  for (const JobResult& job : results.jobs)
+  for (const results::JobResult& job : results.jobs)
     image::writeTextFile(run_dir / jobPageFile(job),
                          jobPage(run_dir, results, job, comparison, context));
   const fs::path index = run_dir / "index.html";

@@ -7,7 +7,7 @@
 // are inline.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 
 #include <filesystem>
 #include <optional>
@@ -16,13 +16,13 @@
 namespace gib::reports {
 
 struct ReportContext {
-  std::optional<RunResults> previous;  // the suite's previous run, for colouring
-  std::vector<RunResults> history;     // recent runs of the suite, oldest first (trends)
+  std::optional<results::RunResults> previous;  // the suite's previous run, for colouring
+  std::vector<results::RunResults> history;     // recent runs of the suite, oldest first (trends)
 };
 
 // Writes <run_dir>/index.html and <run_dir>/report/*.html for `results`, whose output paths are
 // relative to run_dir. Atomic per file. Returns the path of index.html.
 std::filesystem::path writeHtmlReport(const std::filesystem::path& run_dir,
-                                      const RunResults& results, const ReportContext& context);
+                                      const results::RunResults& results, const ReportContext& context);
 
 }  // namespace gib::reports

@@ -32,8 +32,8 @@ bool exists(const fs::path& run_dir, const std::string& path) {
 
 }  // namespace
 
-std::string imageViewer(const fs::path& run_dir, const JobResult& job) {
-  const JobOutputs& out = job.outputs;
+std::string imageViewer(const fs::path& run_dir, const results::JobResult& job) {
+  const results::JobOutputs& out = job.outputs;
   const bool is_reference = job.technique == "reference";
   const std::vector<Layer> candidates = {
       {"reference", "Reference", fmt::format("Reference ({})", job.reference.path_class),
@@ -94,9 +94,9 @@ std::string imageViewer(const fs::path& run_dir, const JobResult& job) {
   return html + notes;
 }
 
-std::string auxiliaryImages(const fs::path& run_dir, const JobResult& job) {
+std::string auxiliaryImages(const fs::path& run_dir, const results::JobResult& job) {
   std::string figures, absent;
-  for (const AuxiliaryImageOutput& aux : job.auxiliary_images) {
+  for (const results::AuxiliaryImageOutput& aux : job.auxiliary_images) {
     if (!exists(run_dir, aux.png)) {
       absent += (absent.empty() ? "" : ", ") + escapeHtml(aux.png);
       continue;

@@ -5,7 +5,7 @@
 // reference picture) simply has fewer buttons, never a broken image.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 
 #include <filesystem>
 #include <string>
@@ -13,10 +13,10 @@
 namespace gib::reports {
 
 // HTML for a page one directory below the run directory (report/<slug>.html).
-std::string imageViewer(const std::filesystem::path& run_dir, const JobResult& job);
+std::string imageViewer(const std::filesystem::path& run_dir, const results::JobResult& job);
 
 // The technique's auxiliary images (a radiance atlas, one bounce's contribution) side by side
 // with their descriptions; empty when the job has none. Same page depth as imageViewer.
-std::string auxiliaryImages(const std::filesystem::path& run_dir, const JobResult& job);
+std::string auxiliaryImages(const std::filesystem::path& run_dir, const results::JobResult& job);
 
 }  // namespace gib::reports

@@ -16,7 +16,7 @@ namespace gib::reports {
 
 namespace {
 
-std::string runFacts(const RunInfo& run) {
+std::string runFacts(const results::RunInfo& run) {
   const std::string gl = run.gl_renderer.empty() ? std::string()
                                                  : fmt::format("{} ({}, {})", run.gl_renderer,
                                                                run.gl_vendor, run.gl_version);
@@ -46,8 +46,8 @@ std::string comparisonIntro(const RunComparison& comparison) {
   if (!comparison.hasPrevious())
     return "<p class=\"note\">No previous run of this suite in the history: nothing is "
            "coloured.</p>\n";
-  const RunInfo& previous = *comparison.previousRun();
-  const DiffReport& diff = *comparison.diff();
+  const results::RunInfo& previous = *comparison.previousRun();
+  const results::DiffReport& diff = *comparison.diff();
   return fmt::format(
       "<p>Compared with the previous run <strong>{}</strong> (commit {}, started {}): {} "
       "regression{}, {} improvement{}.</p>\n"
@@ -59,60 +59,60 @@ std::string comparisonIntro(const RunComparison& comparison) {
       diff.improvements() == 1 ? "" : "s");
 }
 
-std::string jobLink(const RunResults& results, const std::string& id) {
-  const JobResult* job = results.findJob(id);
+std::string jobLink(const results::RunResults& results, const std::string& id) {
+  const results::JobResult* job = results.findJob(id);
   if (!job) return escapeHtml(id);  // a job of the previous run only
   return fmt::format("<a href=\"{}\">{}</a>", escapeHtml(urlPath(jobPageFile(*job))),
                      escapeHtml(id));
 }
 
-std::string toleranceText(const Tolerance& t) {
+std::string toleranceText(const results::Tolerance& t) {
   return fmt::format("±max({}, {}·|previous|)", formatNumber(t.absolute), formatNumber(t.relative));
 }
 
-std::string regressionsSection(const RunResults& results, const RunComparison& comparison) {
+std::string regressionsSection(const results::RunResults& results, const RunComparison& comparison) {
   if (!comparison.hasPrevious()) return {};
-  const DiffReport& diff = *comparison.diff();
+  const results::DiffReport& diff = *comparison.diff();
   HtmlTable table({{"job"},
                    {"quantity"},
                    {"previous", true},
                    {"this run", true},
                    {"change", true},
                    {"allowed"}});
-  for (const MetricChange& c : diff.metrics)
-    if (c.verdict == Verdict::kRegressed)
+  for (const results::MetricChange& c : diff.metrics)
+    if (c.verdict == results::Verdict::kRegressed)
       table.addRow({jobLink(results, c.job), escapeHtml(c.metric), formatNumber(c.base),
                     formatNumber(c.next), formatChange(c.relative_change),
                     escapeHtml(toleranceText(c.tolerance))});
-  for (const TimingChange& c : diff.timings)
-    if (c.verdict == Verdict::kRegressed)
+  for (const results::TimingChange& c : diff.timings)
+    if (c.verdict == results::Verdict::kRegressed)
       table.addRow({jobLink(results, c.job), "median frame time (ms)",
                     formatNumber(c.base_median_ms), formatNumber(c.next_median_ms),
                     formatChange(c.relative_change),
                     escapeHtml(fmt::format(
                         "+{} and Mann–Whitney p < {} (p = {})", formatShare(c.tolerance.relative),
                         formatNumber(c.tolerance.significance), formatNumber(c.p_value, 2)))});
-  for (const JobPresence& p : diff.presence)
-    if (p.verdict == Verdict::kMissing)
+  for (const results::JobPresence& p : diff.presence)
+    if (p.verdict == results::Verdict::kMissing)
       table.addRow({escapeHtml(p.job), "the job", "ran", "missing", "", ""});
   if (table.empty()) return {};
   return htmlSection("regressions", "Regressions", table.html());
 }
 
 // Scenes in suite order; techniques with the reference first, then in suite order.
-std::vector<std::string> orderedUnique(const std::vector<JobResult>& jobs,
-                                       std::string JobResult::*field, const std::string& first) {
+std::vector<std::string> orderedUnique(const std::vector<results::JobResult>& jobs,
+                                       std::string results::JobResult::*field, const std::string& first) {
   std::vector<std::string> names;
   if (!first.empty() && std::any_of(jobs.begin(), jobs.end(),
-                                    [&](const JobResult& job) { return job.*field == first; }))
+                                    [&](const results::JobResult& job) { return job.*field == first; }))
     names.push_back(first);
-  for (const JobResult& job : jobs)
+  for (const results::JobResult& job : jobs)
     if (std::find(names.begin(), names.end(), job.*field) == names.end())
       names.push_back(job.*field);
   return names;
 }
 
-std::string matrixEntry(const RunResults& results, const JobResult& job, bool name_case,
+std::string matrixEntry(const results::RunResults& results, const results::JobResult& job, bool name_case,
                         const RunComparison& comparison) {
   const std::optional<JobComparison> compared = comparison.job(job.id);
   std::string label = sweepLabel(job);
@@ -123,36 +123,36 @@ std::string matrixEntry(const RunResults& results, const JobResult& job, bool na
                   verdictClass(compared ? std::optional(compared->overall) : std::nullopt),
                   escapeHtml(urlPath(jobPageFile(job))), escapeHtml(label));
   if (const std::optional<double> value = job.metric(results.primary_metric)) {
-    const MetricChange* change = compared ? compared->findMetric(results.primary_metric) : nullptr;
+    const results::MetricChange* change = compared ? compared->findMetric(results.primary_metric) : nullptr;
     html += fmt::format("<div>{} {}</div>", escapeHtml(results.primary_metric),
                         verdictSpan(formatNumber(*value), change));
   }
   if (const std::optional<double> frame = job.frameMedianMs()) {
-    const std::optional<TimingChange> timing = compared ? compared->timing : std::nullopt;
+    const std::optional<results::TimingChange> timing = compared ? compared->timing : std::nullopt;
     html += fmt::format("<div>frame {}</div>", verdictSpan(formatNumber(*frame) + " ms", timing));
   }
   return html + "</div>";
 }
 
-std::string matrixSection(const RunResults& results, const RunComparison& comparison) {
-  const std::vector<std::string> scenes = orderedUnique(results.jobs, &JobResult::scene, "");
+std::string matrixSection(const results::RunResults& results, const RunComparison& comparison) {
+  const std::vector<std::string> scenes = orderedUnique(results.jobs, &results::JobResult::scene, "");
   const std::vector<std::string> techniques =
-      orderedUnique(results.jobs, &JobResult::technique, "reference");
+      orderedUnique(results.jobs, &results::JobResult::technique, "reference");
   std::vector<TableColumn> columns = {{"scene"}};
   for (const std::string& technique : techniques) columns.push_back({technique});
   HtmlTable table(columns, "matrix");
   for (const std::string& scene : scenes) {
     std::vector<std::string> cells = {escapeHtml(scene)};
     for (const std::string& technique : techniques) {
-      std::vector<const JobResult*> jobs;
+      std::vector<const results::JobResult*> jobs;
       std::set<std::string> cases;
-      for (const JobResult& job : results.jobs)
+      for (const results::JobResult& job : results.jobs)
         if (job.scene == scene && job.technique == technique) {
           jobs.push_back(&job);
           cases.insert(job.case_name);
         }
       std::string cell;
-      for (const JobResult* job : jobs)
+      for (const results::JobResult* job : jobs)
         cell += matrixEntry(results, *job, cases.size() > 1, comparison);
       cells.push_back(cell);
     }
@@ -167,7 +167,7 @@ std::string matrixSection(const RunResults& results, const RunComparison& compar
 
 }  // namespace
 
-std::string indexPage(const RunResults& results, const RunComparison& comparison) {
+std::string indexPage(const results::RunResults& results, const RunComparison& comparison) {
   std::string body = fmt::format("<h1>GI Bench report: {}</h1>\n", escapeHtml(results.run.suite));
   if (!results.run.suite_description.empty())
     body += fmt::format("<p>{}</p>\n", escapeHtml(results.run.suite_description));

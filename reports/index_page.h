@@ -2,13 +2,13 @@
 // and regressions), and the scene × technique matrix linking to the job pages.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 #include "reports/run_comparison.h"
 
 #include <string>
 
 namespace gib::reports {
 
-std::string indexPage(const RunResults& results, const RunComparison& comparison);
+std::string indexPage(const results::RunResults& results, const RunComparison& comparison);
 
 }  // namespace gib::reports

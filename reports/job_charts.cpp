@@ -2,7 +2,6 @@
 
 #include "reports/html_text.h"
 #include "reports/number_format.h"
-#include "reports/pass_timings_view.h"
 #include "reports/report_labels.h"
 #include "reports/report_page.h"
 #include "reports/svg_charts.h"
@@ -19,17 +18,18 @@ namespace {
 
 constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
-std::string timingsIntro(const TimingsView& view, const std::optional<JobComparison>& compared) {
-  std::string intro =
-      fmt::format("<p>{}; {} warm-up and {} measured frames.",
-                  escapeHtml(view.clock_description.empty() ? view.clock : view.clock_description),
-                  view.warmup_frames, view.measured_frames);
-  const double frame = view.passes.front().median_ms;
+std::string timingsIntro(const metrics::PassTimings& timings,
+                         const std::optional<JobComparison>& compared) {
+  std::string intro = fmt::format("<p>{}; {} warm-up and {} measured frames.",
+                                  escapeHtml(timings.clockDescription()), timings.warmup_frames,
+                                  timings.measured_frames);
+  const double frame = timings.root().reported.median;
   if (std::isfinite(frame))
     intro += fmt::format(" Median frame {} ms", escapeHtml(formatNumber(frame)));
-  if (view.frame_rate_fps) intro += fmt::format(" ({} fps)", formatNumber(*view.frame_rate_fps, 3));
+  if (const std::optional<double> fps = timings.frameRateFps())
+    intro += fmt::format(" ({} fps)", formatNumber(*fps, 3));
   if (compared && compared->timing) {
-    const TimingChange& t = *compared->timing;
+    const results::TimingChange& t = *compared->timing;
     intro += fmt::format("; previous run {} ms, now {} (Mann–Whitney p = {})",
                          formatNumber(t.base_median_ms),
                          verdictSpan(formatNumber(t.next_median_ms) + " ms", compared->timing),
@@ -39,23 +39,31 @@ std::string timingsIntro(const TimingsView& view, const std::optional<JobCompari
 }
 
 // `unit`: what one sample times, "frame" or "iteration".
-std::string passTable(const TimingsView& view, std::string_view unit) {
+std::string passTable(const metrics::PassTimings& timings, std::string_view unit) {
   HtmlTable table({{"pass"},
                    {"median ms", true},
                    {"first quartile", true},
                    {"third quartile", true},
                    {fmt::format("share of {}", unit), true},
                    {fmt::format("calls per {}", unit), true}});
-  for (const PassTimes& pass : view.passes)
+  for (const metrics::PassTiming& pass : timings.passes)
     table.addRow({fmt::format("<span style=\"padding-left:{}em\">{}</span>",
                               1.2 * std::max(0, pass.depth), escapeHtml(pass.name)),
-                  formatNumber(pass.median_ms), formatNumber(pass.first_quartile_ms),
-                  formatNumber(pass.third_quartile_ms), formatShare(pass.share),
+                  formatNumber(pass.reported.median), formatNumber(pass.reported.first_quartile),
+                  formatNumber(pass.reported.third_quartile), formatShare(pass.share),
                   formatNumber(pass.calls_per_frame, 3)});
   return table.html();
 }
 
-std::string phasesTable(const JobResult& job) {
+std::vector<PassBar> passBars(const metrics::PassTimings& timings) {
+  std::vector<PassBar> bars;
+  for (const metrics::PassTiming& pass : timings.passes)
+    bars.push_back({pass.name, pass.depth, pass.reported.median, pass.reported.first_quartile,
+                    pass.reported.third_quartile});
+  return bars;
+}
+
+std::string phasesTable(const results::JobResult& job) {
   if (job.upload_ms == 0 && job.prepare_ms == 0 && job.iterate_ms == 0 && job.iterations == 0)
     return {};
   HtmlTable table({{"phase"}, {"ms", true}});
@@ -69,28 +77,28 @@ std::string phasesTable(const JobResult& job) {
 
 // The metric the convergence plot shows: the fitted one, else the primary metric, else the first
 // the points carry.
-std::string convergenceMetric(const Convergence& convergence, const std::string& primary) {
+std::string convergenceMetric(const results::Convergence& convergence, const std::string& primary) {
   if (!convergence.fit_metric.empty()) return convergence.fit_metric;
-  const NamedValues& first = convergence.points.front().metrics;
+  const results::NamedValues& first = convergence.points.front().metrics;
   for (const auto& [name, value] : first)
     if (name == primary) return primary;
   return first.empty() ? primary : first.front().first;
 }
 
-double valueOf(const NamedValues& values, const std::string& name) {
+double valueOf(const results::NamedValues& values, const std::string& name) {
   for (const auto& [key, value] : values)
     if (key == name) return value;
   return kNoValue;
 }
 
 // One run's value of a job, for a trend; NaN when the run lacks the job or the value.
-using JobValue = std::function<std::optional<double>(const JobResult&)>;
+using JobValue = std::function<std::optional<double>(const results::JobResult&)>;
 
-std::vector<TrendPoint> trendOf(const std::vector<const RunResults*>& runs, const std::string& id,
+std::vector<TrendPoint> trendOf(const std::vector<const results::RunResults*>& runs, const std::string& id,
                                 const JobValue& value) {
   std::vector<TrendPoint> points;
-  for (const RunResults* run : runs) {
-    const JobResult* job = run->findJob(id);
+  for (const results::RunResults* run : runs) {
+    const results::JobResult* job = run->findJob(id);
     const std::optional<double> v = job ? value(*job) : std::nullopt;
     points.push_back({shortCommit(run->run), v.value_or(kNoValue)});
   }
@@ -105,35 +113,35 @@ bool anyFinite(const std::vector<TrendPoint>& points) {
 
 }  // namespace
 
-std::string timingsSection(const JobResult& job, const std::optional<JobComparison>& compared) {
-  const std::optional<TimingsView> view = readTimings(job.timings);
+std::string timingsSection(const results::JobResult& job, const std::optional<JobComparison>& compared) {
   const std::string phases = phasesTable(job);
-  if (!view) return phases.empty() ? std::string() : htmlSection("timings", "Timings", phases);
+  if (!job.timings)
+    return phases.empty() ? std::string() : htmlSection("timings", "Timings", phases);
   return htmlSection("timings", "Timings",
-                     timingsIntro(*view, compared) + "<div class=\"charts\">\n" +
-                         passTable(*view, "frame") + passTimingChart(passBars(*view)) +
+                     timingsIntro(*job.timings, compared) + "<div class=\"charts\">\n" +
+                         passTable(*job.timings, "frame") + passTimingChart(passBars(*job.timings)) +
                          "\n</div>\n" + phases);
 }
 
-std::string iterationTimingsSection(const JobResult& job) {
-  const std::optional<TimingsView> view = readTimings(job.iteration_timings);
-  if (!view) return {};
+std::string iterationTimingsSection(const results::JobResult& job) {
+  if (!job.iteration_timings) return {};
+  const metrics::PassTimings& timings = *job.iteration_timings;
   const std::string intro = fmt::format(
       "<p>{}; {} iterations, each timed as one unit. Median iteration {} ms.</p>\n",
-      escapeHtml(view->clock_description.empty() ? view->clock : view->clock_description),
-      view->measured_frames, escapeHtml(formatNumber(view->passes.front().median_ms)));
+      escapeHtml(timings.clockDescription()), timings.measured_frames,
+      escapeHtml(formatNumber(timings.root().reported.median)));
   return htmlSection("iteration-timings", "Time per iteration",
-                     intro + "<div class=\"charts\">\n" + passTable(*view, "iteration") +
-                         passTimingChart(passBars(*view), "iteration") + "\n</div>\n");
+                     intro + "<div class=\"charts\">\n" + passTable(timings, "iteration") +
+                         passTimingChart(passBars(timings), "iteration") + "\n</div>\n");
 }
 
-std::string convergenceSection(const JobResult& job, const std::string& primary_metric) {
+std::string convergenceSection(const results::JobResult& job, const std::string& primary_metric) {
   if (!job.convergence || job.convergence->points.empty()) return {};
-  const Convergence& c = *job.convergence;
+  const results::Convergence& c = *job.convergence;
   const std::string metric = convergenceMetric(c, primary_metric);
   LogLogPlot plot{fmt::format("Convergence of {}", metric), c.x_label, metric, {}, std::nullopt};
   HtmlTable table({{c.x_label}, {metric, true}, {"seconds", true}});
-  for (const Convergence::Point& point : c.points) {
+  for (const results::Convergence::Point& point : c.points) {
     const double value = valueOf(point.metrics, metric);
     plot.points.emplace_back(point.x, value);
     table.addRow({formatNumber(point.x), formatNumber(value),
@@ -156,10 +164,10 @@ std::string convergenceSection(const JobResult& job, const std::string& primary_
       fit + "<div class=\"charts\">\n" + logLogChart(plot) + "\n" + table.html() + "</div>\n");
 }
 
-std::string trendsSection(const RunResults& results, const JobResult& job,
+std::string trendsSection(const results::RunResults& results, const results::JobResult& job,
                           const ReportContext& context) {
-  std::vector<const RunResults*> runs;
-  for (const RunResults& run : context.history) runs.push_back(&run);
+  std::vector<const results::RunResults*> runs;
+  for (const results::RunResults& run : context.history) runs.push_back(&run);
   if (runs.empty() || runs.back()->run.id != results.run.id) runs.push_back(&results);
   if (runs.size() < 2) return {};
   // Every metric value of the job (against its class reference), the primary one first, then the
@@ -172,13 +180,13 @@ std::string trendsSection(const RunResults& results, const JobResult& job,
   std::string charts;
   for (const std::string& name : names) {
     const std::vector<TrendPoint> metric =
-        trendOf(runs, job.id, [&](const JobResult& j) { return j.metric(name); });
+        trendOf(runs, job.id, [&](const results::JobResult& j) { return j.metric(name); });
     if (anyFinite(metric))
       charts +=
           trendChart(fmt::format("{} over the last {} runs", name, runs.size()), name, metric);
   }
   const std::vector<TrendPoint> frame =
-      trendOf(runs, job.id, [](const JobResult& j) { return j.frameMedianMs(); });
+      trendOf(runs, job.id, [](const results::JobResult& j) { return j.frameMedianMs(); });
   if (anyFinite(frame))
     charts += trendChart(fmt::format("Median frame time over the last {} runs", runs.size()), "ms",
                          frame);

@@ -4,22 +4,22 @@
 #pragma once
 
 #include "reports/html_report.h"
-#include "reports/results.h"
+#include "results/results.h"
 #include "reports/run_comparison.h"
 
 #include <string>
 
 namespace gib::reports {
 
-std::string timingsSection(const JobResult& job, const std::optional<JobComparison>& compared);
+std::string timingsSection(const results::JobResult& job, const std::optional<JobComparison>& compared);
 // The per-pass time of each iteration of an iterative technique; empty when it has none.
-std::string iterationTimingsSection(const JobResult& job);
+std::string iterationTimingsSection(const results::JobResult& job);
 
-std::string convergenceSection(const JobResult& job, const std::string& primary_metric);
+std::string convergenceSection(const results::JobResult& job, const std::string& primary_metric);
 
 // Trends of the primary metric and the median frame time of the job over context.history (the
 // run itself appended when the history does not end with it); shown from two runs on.
-std::string trendsSection(const RunResults& results, const JobResult& job,
+std::string trendsSection(const results::RunResults& results, const results::JobResult& job,
                           const ReportContext& context);
 
 }  // namespace gib::reports

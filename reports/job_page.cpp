@@ -7,7 +7,6 @@
 #include "reports/job_charts.h"
 #include "reports/number_format.h"
 #include "reports/paper_table.h"
-#include "reports/pass_timings_view.h"
 #include "reports/report_labels.h"
 #include "reports/report_page.h"
 
@@ -21,7 +20,7 @@ namespace gib::reports {
 
 namespace {
 
-std::string referenceText(const ReferenceUse& use) {
+std::string referenceText(const results::ReferenceUse& use) {
   return fmt::format("{}: {} spp, seed {}, {}; {}", use.key, use.spp, use.seed, use.path_class,
                      use.store_hit ? "from the store"
                                    : fmt::format("rendered by this run in {} s",
@@ -35,7 +34,7 @@ std::string formatCount(double value) {
   return formatNumber(value);
 }
 
-std::string jobFacts(const JobResult& job) {
+std::string jobFacts(const results::JobResult& job) {
   return factsTable({
       {"case", job.case_name},
       {"scene", job.scene_hash.empty()
@@ -55,7 +54,7 @@ std::string jobFacts(const JobResult& job) {
   });
 }
 
-std::string metricsSection(const JobResult& job, const std::optional<JobComparison>& compared) {
+std::string metricsSection(const results::JobResult& job, const std::optional<JobComparison>& compared) {
   if (job.metrics.empty() && job.metrics_full.empty()) return {};
   const bool full = job.full_reference.has_value() || !job.metrics_full.empty();
   std::vector<std::string> names;
@@ -69,7 +68,7 @@ std::string metricsSection(const JobResult& job, const std::optional<JobComparis
   if (full) columns.push_back({"against the full reference (all paths)", true});
   if (compared) columns.push_back({"previous run", true});
   HtmlTable table(columns);
-  auto value_cell = [&](const NamedValues& values, const std::string& name,
+  auto value_cell = [&](const results::NamedValues& values, const std::string& name,
                         const std::string& change_key) {
     for (const auto& [key, value] : values)
       if (key == name)
@@ -81,7 +80,7 @@ std::string metricsSection(const JobResult& job, const std::optional<JobComparis
     std::vector<std::string> row = {escapeHtml(name), value_cell(job.metrics, name, name)};
     if (full) row.push_back(value_cell(job.metrics_full, name, "full:" + name));
     if (compared) {
-      const MetricChange* change = compared->findMetric(name);
+      const results::MetricChange* change = compared->findMetric(name);
       row.push_back(change ? formatNumber(change->base) : std::string());
     }
     table.addRow(row);
@@ -96,7 +95,7 @@ std::string metricsSection(const JobResult& job, const std::optional<JobComparis
   return htmlSection("metrics", "Metrics", note + table.html());
 }
 
-std::string paperSection(const RunResults& results, const JobResult& job) {
+std::string paperSection(const results::RunResults& results, const results::JobResult& job) {
   const std::string table = paperTable(results, &job.id);
   if (table.empty()) return {};
   return htmlSection("paper", "The paper's numbers beside ours", table);
@@ -104,8 +103,8 @@ std::string paperSection(const RunResults& results, const JobResult& job) {
 
 }  // namespace
 
-std::string jobPage(const std::filesystem::path& run_dir, const RunResults& results,
-                    const JobResult& job, const RunComparison& comparison,
+std::string jobPage(const std::filesystem::path& run_dir, const results::RunResults& results,
+                    const results::JobResult& job, const RunComparison& comparison,
                     const ReportContext& context) {
   const std::optional<JobComparison> compared = comparison.job(job.id);
   std::string body = fmt::format(

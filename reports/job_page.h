@@ -3,7 +3,7 @@
 #pragma once
 
 #include "reports/html_report.h"
-#include "reports/results.h"
+#include "results/results.h"
 #include "reports/run_comparison.h"
 
 #include <filesystem>
@@ -11,8 +11,8 @@
 
 namespace gib::reports {
 
-std::string jobPage(const std::filesystem::path& run_dir, const RunResults& results,
-                    const JobResult& job, const RunComparison& comparison,
+std::string jobPage(const std::filesystem::path& run_dir, const results::RunResults& results,
+                    const results::JobResult& job, const RunComparison& comparison,
                     const ReportContext& context);
 
 }  // namespace gib::reports

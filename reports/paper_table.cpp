@@ -2,7 +2,7 @@
 
 #include "reports/html_text.h"
 #include "reports/number_format.h"
-#include "reports/quantity.h"
+#include "results/quantity.h"
 #include "reports/report_labels.h"
 #include "reports/report_page.h"
 
@@ -12,7 +12,7 @@
 
 namespace gib::reports {
 
-std::string paperTable(const RunResults& results, const std::string* job_id) {
+std::string paperTable(const results::RunResults& results, const std::string* job_id) {
   std::vector<TableColumn> columns;
   if (!job_id) columns.push_back({"job"});
   for (TableColumn column : std::vector<TableColumn>{{"quantity"},
@@ -23,12 +23,12 @@ std::string paperTable(const RunResults& results, const std::string* job_id) {
                                                      {"note"}})
     columns.push_back(std::move(column));
   HtmlTable table(columns);
-  for (const PaperValue& paper : results.paper) {
+  for (const results::PaperValue& paper : results.paper) {
     if (job_id && paper.job != *job_id) continue;
-    const JobResult* job = results.findJob(paper.job);
+    const results::JobResult* job = results.findJob(paper.job);
     const std::string unit = paper.unit.empty() ? "" : " " + paper.unit;
     const std::optional<double> ours =
-        job ? quantityValue(*job, paper.quantity) : std::optional<double>();
+        job ? results::quantityValue(*job, paper.quantity) : std::optional<double>();
     std::vector<std::string> row;
     if (!job_id)
       row.push_back(job ? fmt::format("<a href=\"{}\">{}</a>",

@@ -2,7 +2,7 @@
 // the index show them.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 
 #include <string>
 
@@ -11,6 +11,6 @@ namespace gib::reports {
 // A table of the run's paper values with our value of each quantity and the ratio; with
 // `job_id` only that job's rows, otherwise every row with a job column (links from the index).
 // Empty when there are no rows.
-std::string paperTable(const RunResults& results, const std::string* job_id);
+std::string paperTable(const results::RunResults& results, const std::string* job_id);
 
 }  // namespace gib::reports

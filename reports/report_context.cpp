@@ -2,7 +2,7 @@
 
 namespace gib::reports {
 
-ReportContext loadReportContext(const HistoryDatabase& db, const RunResults& results,
+ReportContext loadReportContext(const results::HistoryDatabase& db, const results::RunResults& results,
                                 std::size_t trend_runs) {
   ReportContext context;
   context.previous = db.previousRun(results.run.suite, results.run.started);

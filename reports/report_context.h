@@ -3,7 +3,7 @@
 // writes a report at the end of `gibench run`.
 #pragma once
 
-#include "reports/history_db.h"
+#include "results/history_db.h"
 #include "reports/html_report.h"
 
 #include <cstddef>
@@ -13,7 +13,7 @@ namespace gib::reports {
 // The newest run of the suite started before `results`, and the last `trend_runs` runs up to it
 // (oldest first). When the database does not hold `results` itself, the report appends it to
 // the trends, so one run fewer is read to keep the trend at `trend_runs` runs.
-ReportContext loadReportContext(const HistoryDatabase& db, const RunResults& results,
+ReportContext loadReportContext(const results::HistoryDatabase& db, const results::RunResults& results,
                                 std::size_t trend_runs);
 
 }  // namespace gib::reports

@@ -7,22 +7,22 @@
 
 namespace gib::reports {
 
-std::string sweepLabel(const JobResult& job) {
+std::string sweepLabel(const results::JobResult& job) {
   const std::size_t slash = job.id.find('/');
   return slash == std::string::npos ? std::string() : job.id.substr(slash + 1);
 }
 
-std::string shortCommit(const RunInfo& run) {
+std::string shortCommit(const results::RunInfo& run) {
   if (run.git_commit.empty()) return "?";
   return run.git_commit.substr(0, 7) + (run.git_dirty ? "*" : "");
 }
 
-std::string formatAssignments(const Assignments& assignments) {
+std::string formatAssignments(const results::Assignments& assignments) {
   return joinNames(assignments, ", ",
                    [](const auto& pair) { return pair.first + "=" + pair.second; });
 }
 
-std::string jobPageFile(const JobResult& job) {
+std::string jobPageFile(const results::JobResult& job) {
   return "report/" + job.slug + ".html";
 }
 

@@ -2,7 +2,7 @@
 // parameter lists, and the relative addresses of job pages and job outputs.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 
 #include <string>
 
@@ -10,16 +10,16 @@ namespace gib::reports {
 
 // The swept values of a job id ("cornell-direct/shadow=pcf,light_samples=4" →
 // "shadow=pcf,light_samples=4"); empty for a job without sweeps.
-std::string sweepLabel(const JobResult& job);
+std::string sweepLabel(const results::JobResult& job);
 
 // "abc1234" (with "*" when the build was dirty), or "?" when the commit is unknown.
-std::string shortCommit(const RunInfo& run);
+std::string shortCommit(const results::RunInfo& run);
 
 // "shadow=pcf, light_samples=4"
-std::string formatAssignments(const Assignments& assignments);
+std::string formatAssignments(const results::Assignments& assignments);
 
 // A job page's file relative to the run directory: "report/<slug>.html".
-std::string jobPageFile(const JobResult& job);
+std::string jobPageFile(const results::JobResult& job);
 
 // An output path of JobOutputs (relative to the run directory, or absolute) as a link from a page
 // `depth` directories below the run directory (0: index.html, 1: report/<slug>.html).

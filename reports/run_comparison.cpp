@@ -10,14 +10,14 @@ namespace gib::reports {
 namespace {
 
 // Folds one value's verdict into the job's: a regression outweighs an improvement.
-void fold(Verdict& overall, Verdict value) {
-  if (value == Verdict::kRegressed || value == Verdict::kMissing)
-    overall = Verdict::kRegressed;
-  else if (value == Verdict::kImproved && overall == Verdict::kUnchanged)
-    overall = Verdict::kImproved;
+void fold(results::Verdict& overall, results::Verdict value) {
+  if (value == results::Verdict::kRegressed || value == results::Verdict::kMissing)
+    overall = results::Verdict::kRegressed;
+  else if (value == results::Verdict::kImproved && overall == results::Verdict::kUnchanged)
+    overall = results::Verdict::kImproved;
 }
 
-std::string spanOf(const std::string& text, std::optional<Verdict> verdict,
+std::string spanOf(const std::string& text, std::optional<results::Verdict> verdict,
                    std::optional<double> relative_change) {
   return fmt::format("<span class=\"{}\">{}</span>{}", verdictClass(verdict), escapeHtml(text),
                      relative_change && *relative_change != 0
@@ -27,22 +27,22 @@ std::string spanOf(const std::string& text, std::optional<Verdict> verdict,
 
 }  // namespace
 
-RunComparison::RunComparison(const RunResults& results, const std::optional<RunResults>& previous) {
+RunComparison::RunComparison(const results::RunResults& results, const std::optional<results::RunResults>& previous) {
   if (!previous) return;
   previous_run_ = previous->run;
-  diff_ = diffResults(*previous, results);
-  for (const MetricChange& change : diff_->metrics) {
+  diff_ = results::diffResults(*previous, results);
+  for (const results::MetricChange& change : diff_->metrics) {
     JobComparison& job = jobs_[change.job];
     fold(job.overall, change.verdict);
     job.metrics.emplace(change.metric, change);
   }
-  for (const TimingChange& change : diff_->timings) {
+  for (const results::TimingChange& change : diff_->timings) {
     JobComparison& job = jobs_[change.job];
     fold(job.overall, change.verdict);
     job.timing = change;
   }
-  for (const JobPresence& presence : diff_->presence)
-    if (presence.verdict == Verdict::kAdded) jobs_[presence.job].overall = Verdict::kAdded;
+  for (const results::JobPresence& presence : diff_->presence)
+    if (presence.verdict == results::Verdict::kAdded) jobs_[presence.job].overall = results::Verdict::kAdded;
 }
 
 std::optional<JobComparison> RunComparison::job(const std::string& id) const {
@@ -51,18 +51,18 @@ std::optional<JobComparison> RunComparison::job(const std::string& id) const {
   return it == jobs_.end() ? JobComparison{} : it->second;
 }
 
-const char* verdictClass(std::optional<Verdict> verdict) {
-  if (verdict == Verdict::kRegressed || verdict == Verdict::kMissing) return "verdict-regressed";
-  if (verdict == Verdict::kImproved) return "verdict-improved";
+const char* verdictClass(std::optional<results::Verdict> verdict) {
+  if (verdict == results::Verdict::kRegressed || verdict == results::Verdict::kMissing) return "verdict-regressed";
+  if (verdict == results::Verdict::kImproved) return "verdict-improved";
   return "verdict-unchanged";
 }
 
-std::string verdictSpan(const std::string& text, const MetricChange* change) {
+std::string verdictSpan(const std::string& text, const results::MetricChange* change) {
   return change ? spanOf(text, change->verdict, change->relative_change)
                 : spanOf(text, std::nullopt, std::nullopt);
 }
 
-std::string verdictSpan(const std::string& text, const std::optional<TimingChange>& change) {
+std::string verdictSpan(const std::string& text, const std::optional<results::TimingChange>& change) {
   return change ? spanOf(text, change->verdict, change->relative_change)
                 : spanOf(text, std::nullopt, std::nullopt);
 }

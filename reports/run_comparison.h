@@ -3,8 +3,8 @@
 // up the verdict of a value.
 #pragma once
 
-#include "reports/results.h"
-#include "reports/results_diff.h"
+#include "results/results.h"
+#include "results/results_diff.h"
 
 #include <map>
 #include <optional>
@@ -15,11 +15,11 @@ namespace gib::reports {
 struct JobComparison {
   // kRegressed when any value of the job regressed, else kImproved when any improved, else
   // kUnchanged; kAdded when the previous run did not have the job.
-  Verdict overall = Verdict::kUnchanged;
-  std::map<std::string, MetricChange> metrics;  // by MetricChange::metric ("relmse", "full:…")
-  std::optional<TimingChange> timing;
+  results::Verdict overall = results::Verdict::kUnchanged;
+  std::map<std::string, results::MetricChange> metrics;  // by results::MetricChange::metric ("relmse", "full:…")
+  std::optional<results::TimingChange> timing;
 
-  const MetricChange* findMetric(const std::string& name) const {
+  const results::MetricChange* findMetric(const std::string& name) const {
     const auto it = metrics.find(name);
     return it == metrics.end() ? nullptr : &it->second;
   }
@@ -28,29 +28,29 @@ struct JobComparison {
 class RunComparison {
  public:
   // No previous run: nothing is compared and every lookup answers "no comparison".
-  RunComparison(const RunResults& results, const std::optional<RunResults>& previous);
+  RunComparison(const results::RunResults& results, const std::optional<results::RunResults>& previous);
 
   bool hasPrevious() const { return diff_.has_value(); }
-  const std::optional<RunInfo>& previousRun() const { return previous_run_; }
-  const std::optional<DiffReport>& diff() const { return diff_; }
+  const std::optional<results::RunInfo>& previousRun() const { return previous_run_; }
+  const std::optional<results::DiffReport>& diff() const { return diff_; }
 
   // nullopt without a previous run.
   std::optional<JobComparison> job(const std::string& id) const;
 
  private:
-  std::optional<RunInfo> previous_run_;
-  std::optional<DiffReport> diff_;
+  std::optional<results::RunInfo> previous_run_;
+  std::optional<results::DiffReport> diff_;
   std::map<std::string, JobComparison> jobs_;
 };
 
 // The CSS class of a verdict in the report: "verdict-regressed", "verdict-improved",
 // "verdict-unchanged" (also for added and for no comparison).
-const char* verdictClass(std::optional<Verdict> verdict);
+const char* verdictClass(std::optional<results::Verdict> verdict);
 
 // `text` (escaped here) in a span of the change's verdict class, followed by the relative change
 // in small print when it is not zero: `<span class="verdict-regressed">0.013</span>
 // <small>(+12.5%)</small>`. No change (null, nullopt): a neutral span.
-std::string verdictSpan(const std::string& text, const MetricChange* change);
-std::string verdictSpan(const std::string& text, const std::optional<TimingChange>& change);
+std::string verdictSpan(const std::string& text, const results::MetricChange* change);
+std::string verdictSpan(const std::string& text, const std::optional<results::TimingChange>& change);
 
 }  // namespace gib::reports

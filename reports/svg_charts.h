@@ -12,7 +12,7 @@
 
 namespace gib::reports {
 
-// One row of the per-pass timing table (metrics::passTimingsJson): the frame at depth 0, its
+// One row of the per-pass timing table (metrics::PassTimings): the frame at depth 0, its
 // passes below it.
 struct PassBar {
   std::string name;

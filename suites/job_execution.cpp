@@ -12,6 +12,7 @@
 #include "metrics/metric_registry.h"
 #include "metrics/pass_timing_summary.h"
 #include "realtime/technique_output.h"
+#include "results/results_json.h"
 #include "realtime/technique_runner.h"
 #include "reference/progressive_renderer.h"
 #include "reference/reference_output.h"
@@ -60,8 +61,8 @@ ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& p
   return spec;
 }
 
-reports::ReferenceUse referenceUse(const ref::StoredReference& stored, double seconds) {
-  reports::ReferenceUse use;
+results::ReferenceUse referenceUse(const ref::StoredReference& stored, double seconds) {
+  results::ReferenceUse use;
   use.key = stored.entry.key;
   use.spp = static_cast<int>(stored.entry.spec.spp);
   use.seed = stored.entry.spec.seed;
@@ -74,7 +75,7 @@ reports::ReferenceUse referenceUse(const ref::StoredReference& stored, double se
 // Fetches (or renders and stores) the reference of `path_class`, saying which on the way.
 ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment& env,
                                      const scene::PathClass& path_class,
-                                     reports::ReferenceUse* use) {
+                                     results::ReferenceUse* use) {
   const ref::ReferenceSpec spec = referenceSpec(p, path_class);
   const std::string what =
       fmt::format("reference {} ({}x{}, {} spp)", scene::describePathClass(path_class), spec.width,
@@ -97,7 +98,7 @@ metrics::MetricReport measure(const image::Image& reference, const image::Image&
 // The metric the convergence fit follows: MSE when measured (for an unbiased renderer its
 // expectation falls exactly as 1/spp, where relMSE's per-pixel ratios are heavy-tailed at low spp),
 // else relMSE, else the first value.
-std::string fitMetric(const reports::NamedValues& values) {
+std::string fitMetric(const results::NamedValues& values) {
   for (const char* preferred : {"mse", "relmse"})
     for (const auto& [name, value] : values)
       if (name == preferred) return name;
@@ -105,11 +106,11 @@ std::string fitMetric(const reports::NamedValues& values) {
 }
 
 // Least-squares slope of log(metric) against log(x) over the points where both are positive.
-void fitConvergence(reports::Convergence& convergence) {
+void fitConvergence(results::Convergence& convergence) {
   if (convergence.points.empty()) return;
   const std::string metric = fitMetric(convergence.points.front().metrics);
   std::vector<double> x, y;
-  for (const reports::Convergence::Point& point : convergence.points)
+  for (const results::Convergence::Point& point : convergence.points)
     for (const auto& [name, value] : point.metrics)
       if (name == metric && point.x > 0 && value > 0 && std::isfinite(value)) {
         x.push_back(std::log(point.x));
@@ -127,7 +128,7 @@ void fitConvergence(reports::Convergence& convergence) {
 // flip.png of `test` against `reference`.
 void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
                            const ref::StoredReference& reference, const image::Image& test,
-                           const metrics::MetricReport& report, reports::JobOutputs& outputs) {
+                           const metrics::MetricReport& report, results::JobOutputs& outputs) {
   const fs::path reference_png = job_dir / "reference.png";
   image::writePng(reference_png, reference.mean);
   outputs.reference_png = relativePath(run_dir, reference_png);
@@ -146,9 +147,9 @@ void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
 }
 
 void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env,
-                                 const image::Image& test, reports::JobResult& result) {
+                                 const image::Image& test, results::JobResult& result) {
   if (referenceClass(p) == scene::PathClass{}) return;  // the class reference is the full one
-  reports::ReferenceUse use;
+  results::ReferenceUse use;
   const ref::StoredReference full = obtainReference(p, env, scene::PathClass{}, &use);
   result.full_reference = use;
   result.metrics_full = measure(full.mean, test, p.job->settings.metrics).values;
@@ -157,7 +158,7 @@ void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env
 // The reference alone: the stored reference, and when the case lists checkpoints an independent
 // render measured against it at each, for the convergence plot.
 void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const fs::path& job_dir,
-                     reports::JobResult& result) {
+                     results::JobResult& result) {
   const ref::StoredReference reference =
       obtainReference(p, env, referenceClass(p), &result.reference);
   const std::vector<int>& checkpoints = p.job->settings.checkpoints;
@@ -172,7 +173,7 @@ void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const fs::
     settings.seed = independentSeed(p.job->settings.reference.seed);
     settings.path_class = referenceClass(p);
     settings.progress = env.progress;
-    reports::Convergence convergence;
+    results::Convergence convergence;
     convergence.x_label = "spp";
     // One render to the last checkpoint yields every checkpoint that is a pass boundary
     // (1, 2, 4, …); the others are rendered on their own.
@@ -231,10 +232,10 @@ rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnviro
 
 // An iterative technique's error after each checkpoint's number of iterations, from the images
 // the run captured on its way.
-reports::Convergence techniqueConvergence(const PreparedJob& p,
+results::Convergence techniqueConvergence(const PreparedJob& p,
                                           const std::vector<rt::IterationCapture>& captures,
                                           const image::Image& reference) {
-  reports::Convergence convergence;
+  results::Convergence convergence;
   convergence.x_label = "iterations";
   for (const rt::IterationCapture& capture : captures)
     convergence.points.push_back({double(capture.iterations),
@@ -245,7 +246,7 @@ reports::Convergence techniqueConvergence(const PreparedJob& p,
 }
 
 void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::path& job_dir,
-                     reports::JobResult& result, rt::gl::GlIdentity* gl) {
+                     results::JobResult& result, rt::gl::GlIdentity* gl) {
   const rt::TechniqueRunSettings settings = techniqueSettings(p, env);
   if (env.note)
     env.note(fmt::format("{}: {} warm-up + {} measured frames at {}x{}", p.technique->name,
@@ -253,21 +254,19 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::
   const rt::TechniqueRunResult run =
       rt::runTechnique(p.scene, *p.technique, *p.parameters, settings);
   if (gl) *gl = run.gl;
-  const std::vector<metrics::PassTimingRow> rows = metrics::summarizeProfile(run.profile);
-  result.timings = metrics::passTimingsJson(run.profile, rows);
+  result.timings = metrics::summarizeProfile(run.profile);
   result.upload_ms = run.upload_ms;
   result.prepare_ms = run.prepare_ms;
   result.iterate_ms = run.iterate_ms;
   result.iterations = run.iterations;
   if (run.iteration_profile.measured_frames > 0)
-    result.iteration_timings = metrics::passTimingsJson(
-        run.iteration_profile, metrics::summarizeProfile(run.iteration_profile));
+    result.iteration_timings = metrics::summarizeProfile(run.iteration_profile);
   for (const rt::TechniqueStatistic& statistic : run.statistics)
     result.statistics.emplace_back(statistic.name, statistic.value);
 
   const fs::path exr = job_dir / "image.exr";
   image::Metadata metadata = rt::techniqueOutputMetadata(
-      p.scene, *p.technique, *p.parameters, settings, run, rows.front().reported.median);
+      p.scene, *p.technique, *p.parameters, settings, run, result.timings->root().reported.median);
   const rt::TechniqueOutputFiles files = rt::writeTechniqueOutputs(exr, run, metadata);
   result.outputs.image = relativePath(env.run_dir, exr);
   result.outputs.image_png = relativePath(env.run_dir, files.png);
@@ -276,7 +275,7 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::
                                        relativePath(env.run_dir, aux.exr),
                                        relativePath(env.run_dir, aux.png)});
   const fs::path timings = job_dir / "timings.json";
-  image::writeTextFile(timings, result.timings.dump(2) + "\n");
+  image::writeTextFile(timings, results::passTimingsToJson(*result.timings).dump(2) + "\n");
   result.outputs.timings_json = relativePath(env.run_dir, timings);
 
   const ref::StoredReference reference =
@@ -346,11 +345,11 @@ PreparedJob prepareJob(const Job& job) {
   return p;
 }
 
-reports::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
+results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
                               const fs::path& job_dir, rt::gl::GlIdentity* gl) {
   const Clock::time_point start = Clock::now();
   const Job& job = *p.job;
-  reports::JobResult result;
+  results::JobResult result;
   result.id = job.id;
   result.slug = job.slug;
   result.case_name = job.case_name;

@@ -6,7 +6,7 @@
 #include "realtime/gl/context.h"
 #include "realtime/technique.h"
 #include "reference/reference_store.h"
-#include "reports/results.h"
+#include "results/results.h"
 #include "scene/scene.h"
 #include "suites/job_expansion.h"
 
@@ -45,7 +45,7 @@ struct JobEnvironment {
 
 // Runs the job and writes its files into `job_dir`. The GL identity of a technique job is
 // returned through `gl` when given.
-reports::JobResult executeJob(const PreparedJob& job, const JobEnvironment& environment,
+results::JobResult executeJob(const PreparedJob& job, const JobEnvironment& environment,
                               const std::filesystem::path& job_dir,
                               rt::gl::GlIdentity* gl = nullptr);
 

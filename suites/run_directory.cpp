@@ -2,7 +2,7 @@
 
 #include "common/input_error.h"
 #include "image/output_files.h"
-#include "reports/results_json.h"
+#include "results/results_json.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -37,7 +37,7 @@ bool isEmptyDirectory(const fs::path& dir) {
 }  // namespace
 
 RunDirectory RunDirectory::open(const fs::path& dir, const std::string& suite,
-                                const reports::RunInfo& fresh) {
+                                const results::RunInfo& fresh) {
   RunDirectory run;
   run.dir_ = dir;
   const fs::path state = dir / kStateFile;
@@ -78,13 +78,13 @@ fs::path RunDirectory::jobDirectory(const Job& job) const {
   return dir_ / "jobs" / job.slug;
 }
 
-std::optional<reports::JobResult> RunDirectory::finishedJob(const Job& job,
+std::optional<results::JobResult> RunDirectory::finishedJob(const Job& job,
                                                             const std::string& job_hash) const {
   const fs::path file = jobDirectory(job) / "result.json";
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return std::nullopt;
   try {
-    reports::JobResult result = reports::readJobFile(file);
+    results::JobResult result = results::readJobFile(file);
     if (result.job_hash == job_hash && result.id == job.id) return result;
   } catch (const InputError&) {
     // A result of an older schema or a damaged file: the job runs again.
@@ -103,8 +103,8 @@ fs::path RunDirectory::prepareJob(const Job& job) const {
   return dir;
 }
 
-void RunDirectory::recordJob(const Job& job, const reports::JobResult& result) const {
-  reports::writeJobFile(jobDirectory(job) / "result.json", result);
+void RunDirectory::recordJob(const Job& job, const results::JobResult& result) const {
+  results::writeJobFile(jobDirectory(job) / "result.json", result);
 }
 
 }  // namespace gib::suites

@@ -10,7 +10,7 @@
 // directory is the debris of an interrupted job and is cleared before the job runs again.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 #include "suites/job_expansion.h"
 
 #include <filesystem>
@@ -25,7 +25,7 @@ class RunDirectory {
   // Throws gib::InputError when `dir` is a file, holds something other than a gibench run, holds
   // a run of another suite, or cannot be written.
   static RunDirectory open(const std::filesystem::path& dir, const std::string& suite,
-                           const reports::RunInfo& fresh);
+                           const results::RunInfo& fresh);
 
   const std::filesystem::path& path() const { return dir_; }
   const std::string& runId() const { return run_id_; }
@@ -34,11 +34,11 @@ class RunDirectory {
 
   std::filesystem::path jobDirectory(const Job& job) const;
   // The job's recorded result when it finished with this `job_hash`.
-  std::optional<reports::JobResult> finishedJob(const Job& job, const std::string& job_hash) const;
+  std::optional<results::JobResult> finishedJob(const Job& job, const std::string& job_hash) const;
   // An empty directory for the job (the debris of an earlier attempt removed).
   std::filesystem::path prepareJob(const Job& job) const;
   // Records the finished job (atomically: last of its files).
-  void recordJob(const Job& job, const reports::JobResult& result) const;
+  void recordJob(const Job& job, const results::JobResult& result) const;
 
  private:
   std::filesystem::path dir_;

@@ -41,8 +41,8 @@ std::string utcTimestamp() {
   return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", now);
 }
 
-reports::RunInfo describeEnvironment() {
-  reports::RunInfo info;
+results::RunInfo describeEnvironment() {
+  results::RunInfo info;
   info.gibench_version = kVersion;
   info.git_commit = kGitCommit;
   info.git_dirty = kGitDirty;

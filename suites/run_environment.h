@@ -2,7 +2,7 @@
 // numbers apart when they came from different commits, builds, CPUs or GL implementations.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 
 #include <string>
 
@@ -10,7 +10,7 @@ namespace gib::suites {
 
 // Version, git commit and dirty flag, build type, host, CPU model and cores, Embree version.
 // The GL fields stay empty: the runner fills them from the first technique job.
-reports::RunInfo describeEnvironment();
+results::RunInfo describeEnvironment();
 
 // "2026-11-22T10:04:05Z" for now (UTC).
 std::string utcTimestamp();

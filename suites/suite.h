@@ -4,7 +4,7 @@
 // has been validated against the scene, technique and metric registries.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 
 #include <filesystem>
 #include <optional>
@@ -84,11 +84,11 @@ struct Suite {
   std::vector<Case> cases;     // file order
   // [tolerances]: how much a metric or the frame time may change before `gibench diff` calls it
   // a regression; recorded with every run.
-  reports::Tolerances tolerances;
+  results::Tolerances tolerances;
   // [[paper]]: the source document's numbers, shown beside ours in the report.
-  std::vector<reports::PaperValue> paper;
+  std::vector<results::PaperValue> paper;
   // [[chart]]: figures drawn over the suite's jobs in the report.
-  std::vector<reports::ChartSpec> charts;
+  std::vector<results::ChartSpec> charts;
 };
 
 }  // namespace gib::suites

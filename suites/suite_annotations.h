@@ -17,17 +17,18 @@
 #pragma once
 
 #include "common/toml_reader.h"
-#include "reports/results.h"
+#include "results/results.h"
 #include "suites/job_expansion.h"
 
 #include <vector>
 
 namespace gib::suites {
 
-reports::Tolerances readTolerances(const TomlTableReader& root, const toml::node& node);
+results::Tolerances readTolerances(const TomlTableReader& root, const toml::node& node);
 
-// [[chart]]: a figure of the suite's jobs (reports::ChartSpec). Checks the quantities' syntax
-// and that the jobs glob matches a job.
+// [[chart]]: a figure of the suite's jobs (results::ChartSpec). Checks the quantities' syntax,
+// that the jobs glob matches a job, and that every pass a quantity names is declared by every
+// technique among those jobs (realtime/pass_declarations.h).
 //
 //   [[chart]]
 //   title = "Fig. 7: time per iteration against vertex count"
@@ -37,11 +38,12 @@ reports::Tolerances readTolerances(const TomlTableReader& root, const toml::node
 //   series = "parameter:selection"            # optional: one line per value
 //   log_x = true                              # optional, default false; log_y likewise
 //   front = false                             # optional: mark the Pareto front
-std::vector<reports::ChartSpec> readCharts(const TomlTableReader& root,
+std::vector<results::ChartSpec> readCharts(const TomlTableReader& root,
                                            const std::vector<Job>& jobs);
 
-// Checks that every entry names a job of `jobs`.
-std::vector<reports::PaperValue> readPaperValues(const TomlTableReader& root,
+// Checks that every entry names a job of `jobs`, and that a pass its quantity names is declared
+// by the job's technique.
+std::vector<results::PaperValue> readPaperValues(const TomlTableReader& root,
                                                  const std::vector<Job>& jobs);
 
 }  // namespace gib::suites

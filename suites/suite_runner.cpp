@@ -6,11 +6,9 @@
 #include "image/output_files.h"
 #include "realtime/gl/context.h"
 #include "reference/reference_store.h"
-#include "reports/history_db.h"
-#include "reports/html_report.h"
-#include "reports/report_context.h"
-#include "reports/results_csv.h"
-#include "reports/results_json.h"
+#include "results/history_db.h"
+#include "results/results_csv.h"
+#include "results/results_json.h"
 #include "suites/job_execution.h"
 #include "suites/run_directory.h"
 #include "suites/run_environment.h"
@@ -50,7 +48,7 @@ std::string fileHash(const fs::path& path) {
 }
 
 // "20261122-100405-smoke-1a2b3c4d": sortable by start, unique across hosts and processes.
-std::string newRunId(const std::string& suite, const reports::RunInfo& info) {
+std::string newRunId(const std::string& suite, const results::RunInfo& info) {
   ContentHasher hasher;
   hasher.addString(info.started);
   hasher.addString(info.host);
@@ -74,7 +72,7 @@ void checkResources(const RunOptions& options, const std::vector<PreparedJob>& j
         fmt::format("cannot write the reference store '{}'{}; choose another with "
                     "--store DIR",
                     options.store_root.string(), ec ? " (" + ec.message() + ")" : ""));
-  if (!options.history_db.empty()) reports::HistoryDatabase::open(options.history_db);
+  if (!options.history_db.empty()) results::HistoryDatabase::open(options.history_db);
   for (const PreparedJob& job : jobs)
     if (job.technique) {
       rt::gl::ContextOptions gl;
@@ -86,7 +84,7 @@ void checkResources(const RunOptions& options, const std::vector<PreparedJob>& j
 
 // The GL implementation of a technique job finished earlier, from its image's metadata.
 std::optional<rt::gl::GlIdentity> glOfRecordedJob(const fs::path& run_dir,
-                                                  const reports::JobResult& job) {
+                                                  const results::JobResult& job) {
   if (job.outputs.timings_json.empty() || job.outputs.image.empty()) return std::nullopt;
   try {
     const image::ExrFile file = image::readExr(run_dir / job.outputs.image);
@@ -101,9 +99,9 @@ std::optional<rt::gl::GlIdentity> glOfRecordedJob(const fs::path& run_dir,
   }
 }
 
-std::string primaryMetric(const std::vector<reports::JobResult>& jobs) {
+std::string primaryMetric(const std::vector<results::JobResult>& jobs) {
   std::string first;
-  for (const reports::JobResult& job : jobs)
+  for (const results::JobResult& job : jobs)
     for (const auto& [name, value] : job.metrics) {
       if (name == "relmse") return name;
       if (first.empty()) first = name;
@@ -111,7 +109,7 @@ std::string primaryMetric(const std::vector<reports::JobResult>& jobs) {
   return first;
 }
 
-std::string summaryOf(const reports::JobResult& job, const std::string& metric) {
+std::string summaryOf(const results::JobResult& job, const std::string& metric) {
   std::string text = fmt::format("done in {:.1f} s", job.seconds);
   if (const std::optional<double> value = job.metric(metric))
     text += fmt::format(", {} {:.4g}", metric, *value);
@@ -126,7 +124,7 @@ class JobScheduler {
  public:
   JobScheduler(const std::vector<PreparedJob>& jobs, const RunDirectory& dir,
                const RunOptions& options, ref::ReferenceStore& store,
-               std::vector<std::optional<reports::JobResult>>& results)
+               std::vector<std::optional<results::JobResult>>& results)
       : jobs_(jobs), dir_(dir), options_(options), store_(store), results_(results) {}
 
   void run(const std::vector<std::size_t>& pending) {
@@ -178,7 +176,7 @@ class JobScheduler {
     env.note = [&](const std::string& note) { log(prefix + ": " + note); };
     rt::gl::GlIdentity gl;
     const fs::path job_dir = dir_.prepareJob(*job.job);
-    reports::JobResult result = executeJob(job, env, job_dir, &gl);
+    results::JobResult result = executeJob(job, env, job_dir, &gl);
     dir_.recordJob(*job.job, result);
     log(prefix + ": " + summaryOf(result, primaryMetric({result})));
     std::lock_guard lock(log_mutex_);
@@ -190,7 +188,7 @@ class JobScheduler {
   const RunDirectory& dir_;
   const RunOptions& options_;
   ref::ReferenceStore& store_;
-  std::vector<std::optional<reports::JobResult>>& results_;
+  std::vector<std::optional<results::JobResult>>& results_;
   std::mutex log_mutex_;
   std::optional<rt::gl::GlIdentity> gl_;
 };
@@ -222,7 +220,7 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   for (const Job& job : jobs) prepared.push_back(prepareJob(job));
   checkResources(options, prepared);
 
-  reports::RunInfo info = describeEnvironment();
+  results::RunInfo info = describeEnvironment();
   info.started = utcTimestamp();
   info.id = newRunId(suite.name, info);
   const RunDirectory dir = RunDirectory::open(options.out_dir, suite.name, info);
@@ -238,7 +236,7 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
                options.parallel_jobs);
 
   RunOutcome outcome;
-  std::vector<std::optional<reports::JobResult>> results(jobs.size());
+  std::vector<std::optional<results::JobResult>> results(jobs.size());
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     results[i] = dir.finishedJob(jobs[i], prepared[i].hash);
@@ -255,8 +253,8 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   JobScheduler scheduler(prepared, dir, options, store, results);
   scheduler.run(pending);
 
-  reports::RunResults& run = outcome.results;
-  for (std::optional<reports::JobResult>& result : results) run.jobs.push_back(std::move(*result));
+  results::RunResults& run = outcome.results;
+  for (std::optional<results::JobResult>& result : results) run.jobs.push_back(std::move(*result));
   std::optional<rt::gl::GlIdentity> gl = scheduler.gl();
   for (std::size_t i = 0; !gl && i < run.jobs.size(); ++i)
     gl = glOfRecordedJob(dir.path(), run.jobs[i]);
@@ -276,22 +274,17 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   info.finished = utcTimestamp();
   run.run = info;
   run.tolerances = suite.tolerances;
-  for (const reports::PaperValue& value : suite.paper)
+  for (const results::PaperValue& value : suite.paper)
     if (run.findJob(value.job)) run.paper.push_back(value);
   run.charts = suite.charts;
   run.primary_metric = primaryMetric(run.jobs);
 
+  outcome.run_dir = dir.path();
   outcome.results_file = dir.path() / "results.json";
-  reports::writeResultsFile(outcome.results_file, run);
-  image::writeTextFile(dir.path() / "results.csv", reports::resultsCsv(run));
-
-  reports::ReportContext context;
-  if (!options.history_db.empty()) {
-    reports::HistoryDatabase db = reports::HistoryDatabase::open(options.history_db);
-    outcome.history_row = db.append(run);
-    context = reports::loadReportContext(db, run, static_cast<std::size_t>(options.trend_runs));
-  }
-  outcome.report = reports::writeHtmlReport(dir.path(), run, context);
+  results::writeResultsFile(outcome.results_file, run);
+  image::writeTextFile(dir.path() / "results.csv", results::resultsCsv(run));
+  if (!options.history_db.empty())
+    outcome.history_row = results::HistoryDatabase::open(options.history_db).append(run);
   return outcome;
 }
 

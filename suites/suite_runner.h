@@ -1,9 +1,11 @@
 // `gibench run`: a suite's jobs rendered, measured and recorded in a run directory
-// (suites/run_directory.h), then the run's results.json and results.csv, its row in the history
-// database and its HTML report. Resumable: a rerun into the same directory skips finished jobs.
+// (suites/run_directory.h), then the run's results.json and results.csv and its row in the
+// history database. The harness produces results; the HTML report is written from them by its
+// consumer (cli/run_command.cpp, `gibench report`). Resumable: a rerun into the same directory
+// skips finished jobs.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 #include "suites/job_expansion.h"
 #include "suites/suite.h"
 
@@ -24,16 +26,15 @@ struct RunOptions {
   std::vector<std::string> only;
   std::string gl_device;    // empty: $GIBENCH_GL_DEVICE, else auto
   bool progress = false;    // progress bars on a terminal
-  int trend_runs = 20;      // runs of the suite the report's trend charts show
   std::FILE* log = stderr;  // one line per job as it starts and ends
 };
 
 struct RunOutcome {
-  reports::RunResults results;
+  results::RunResults results;
   std::size_t ran = 0;      // jobs run now
   std::size_t skipped = 0;  // jobs finished by an earlier, interrupted run
+  std::filesystem::path run_dir;
   std::filesystem::path results_file;
-  std::filesystem::path report;  // index.html
   std::int64_t history_row = 0;  // 0 when not recorded
 };
 

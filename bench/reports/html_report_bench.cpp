@@ -19,8 +19,8 @@ namespace fs = std::filesystem;
 constexpr int kJobs = 50;
 constexpr int kTrendRuns = 20;
 
-reports::RunResults nightlyRun(const std::string& id, double drift) {
-  reports::RunResults run = test::syntheticReportResults(id);
+results::RunResults nightlyRun(const std::string& id, double drift) {
+  results::RunResults run = test::syntheticReportResults(id);
   run.jobs.clear();
   run.paper.clear();
   for (int i = 0; i < kJobs; ++i)
@@ -33,7 +33,7 @@ reports::RunResults nightlyRun(const std::string& id, double drift) {
 struct ReportFixture {
   const bench::TemporaryDirectory temporary{"gib-report-bench"};
   const fs::path& dir = temporary.path();
-  reports::RunResults results = nightlyRun("20261122-100405-nightly-1a2b3c4d", 0);
+  results::RunResults results = nightlyRun("20261122-100405-nightly-1a2b3c4d", 0);
   reports::ReportContext context;
   ReportFixture() {
     test::writeSyntheticOutputs(dir, results);

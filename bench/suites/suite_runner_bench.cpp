@@ -2,7 +2,7 @@
 // checking every job before a run starts (scenes loaded, parameters parsed, job hashes), and a
 // whole run of a small suite whose references are already in the store (what every nightly job
 // pays beyond its frames: context creation, metrics, images, results, history, report).
-#include "reports/results_json.h"
+#include "results/results_json.h"
 #include "suites/job_execution.h"
 #include "suites/suite_file.h"
 #include "suites/suite_runner.h"

@@ -1,7 +1,7 @@
 // `gibench diff` as a user (or `git bisect run`) runs it: exit codes, the human and JSON output,
 // every form of run argument, and bad input.
-#include "reports/history_db.h"
-#include "reports/results_json.h"
+#include "results/history_db.h"
+#include "results/results_json.h"
 #include "support/run_command.h"
 #include "support/synthetic_results.h"
 #include "support/temp_dir.h"
@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-reports::RunResults runWithRelmse(const std::string& id, double relmse) {
+results::RunResults runWithRelmse(const std::string& id, double relmse) {
   return syntheticRun(id, {syntheticJob("cornell-direct", {{"relmse", relmse}, {"ssim", 0.9}},
                                         noisyFrameTimes(id.size(), 16, 5.0))});
 }
@@ -27,9 +27,9 @@ reports::RunResults runWithRelmse(const std::string& id, double relmse) {
 class DiffCommandTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    reports::writeResultsFile(dir_ / "base.json", runWithRelmse("base-run", 0.020));
-    reports::writeResultsFile(dir_ / "same.json", runWithRelmse("same-run", 0.020));
-    reports::writeResultsFile(dir_ / "worse.json", runWithRelmse("worse-run", 0.022));
+    results::writeResultsFile(dir_ / "base.json", runWithRelmse("base-run", 0.020));
+    results::writeResultsFile(dir_ / "same.json", runWithRelmse("same-run", 0.020));
+    results::writeResultsFile(dir_ / "worse.json", runWithRelmse("worse-run", 0.022));
   }
   std::string file(const char* name) const { return (dir_ / name).string(); }
   CommandResult diff(std::vector<std::string> args, const std::vector<std::string>& env = {}) {
@@ -70,12 +70,12 @@ TEST_F(DiffCommandTest, JsonIsOneObject) {
 
 TEST_F(DiffCommandTest, RunDirectoriesAndDatabaseRunsAreArguments) {
   fs::create_directory(dir_ / "run");
-  reports::writeResultsFile(dir_ / "run" / "results.json", runWithRelmse("dir-run", 0.022));
+  results::writeResultsFile(dir_ / "run" / "results.json", runWithRelmse("dir-run", 0.022));
   EXPECT_EQ(diff({file("base.json"), file("run")}).exit_code, 1);
 
   fs::create_directory(dir_ / "store");
   {
-    reports::HistoryDatabase db = reports::HistoryDatabase::open(dir_ / "store" / "history.sqlite");
+    results::HistoryDatabase db = results::HistoryDatabase::open(dir_ / "store" / "history.sqlite");
     db.append(runWithRelmse("base-run", 0.020));   // row 1
     db.append(runWithRelmse("worse-run", 0.022));  // row 2
   }
@@ -94,7 +94,7 @@ TEST_F(DiffCommandTest, BadInputExitsWithCodeTwoAndOneLine) {
   std::ofstream(dir_ / "other.json") << R"({"hello": "world"})";
   std::ofstream(dir_ / "garbage.sqlite") << std::string(2048, 'g');
   fs::create_directory(dir_ / "empty-store");
-  { reports::HistoryDatabase::open(dir_ / "history.sqlite").append(runWithRelmse("a", 1)); }
+  { results::HistoryDatabase::open(dir_ / "history.sqlite").append(runWithRelmse("a", 1)); }
   const std::string db = (dir_ / "history.sqlite").string();
   struct Case {
     std::vector<std::string> args;

@@ -1,6 +1,6 @@
 // `gibench history` as a user runs it: the runs table, a metric's values, JSON, the filters, and
 // a database that is missing or not ours.
-#include "reports/history_db.h"
+#include "results/history_db.h"
 #include "support/run_command.h"
 #include "support/synthetic_results.h"
 #include "support/temp_dir.h"
@@ -19,9 +19,9 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-reports::RunResults recordedRun(const std::string& id, const std::string& suite,
+results::RunResults recordedRun(const std::string& id, const std::string& suite,
                                 const std::string& started, double relmse, bool dirty) {
-  reports::RunResults run =
+  results::RunResults run =
       syntheticRun(id, {syntheticJob("cornell-direct", {{"relmse", relmse}}, {4, 5, 6})});
   run.run.suite = suite;
   run.run.started = started;
@@ -35,7 +35,7 @@ reports::RunResults recordedRun(const std::string& id, const std::string& suite,
 class HistoryCommandTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    reports::HistoryDatabase db = reports::HistoryDatabase::open(dir_ / "store" / "history.sqlite");
+    results::HistoryDatabase db = results::HistoryDatabase::open(dir_ / "store" / "history.sqlite");
     db.append(recordedRun("r1", "smoke", "2026-11-20T10:00:00Z", 0.01, false));
     db.append(recordedRun("r2", "nightly", "2026-11-21T10:00:00Z", 0.02, true));
     db.append(recordedRun("r3", "smoke", "2026-11-22T10:00:00Z",

@@ -1,7 +1,7 @@
 // `gibench report` as a user runs it: the report of a run directory, compared with the history
 // database, and bad input.
-#include "reports/history_db.h"
-#include "reports/results_json.h"
+#include "results/history_db.h"
+#include "results/results_json.h"
 #include "support/run_command.h"
 #include "support/synthetic_report_run.h"
 #include "support/temp_dir.h"
@@ -30,12 +30,12 @@ class ReportCommand : public ::testing::Test {
     results_ = syntheticReportResults();
     results_.run.store = (dir_ / "store").string();  // no history database there
     writeSyntheticOutputs(run_dir_, results_);
-    reports::writeResultsFile(run_dir_ / "results.json", results_);
+    results::writeResultsFile(run_dir_ / "results.json", results_);
   }
 
   TempDir dir_;
   fs::path run_dir_ = dir_ / "run";
-  reports::RunResults results_;
+  results::RunResults results_;
 };
 
 TEST_F(ReportCommand, WritesTheReportAndPrintsThePathOfIndexHtml) {
@@ -44,18 +44,18 @@ TEST_F(ReportCommand, WritesTheReportAndPrintsThePathOfIndexHtml) {
   EXPECT_EQ(r.out, (run_dir_ / "index.html").string() + "\n");
   EXPECT_NE(r.err.find("no history database at"), std::string::npos) << r.err;
   EXPECT_NE(readText(run_dir_ / "index.html").find("GI Bench report: smoke"), std::string::npos);
-  for (const reports::JobResult& job : results_.jobs)
+  for (const results::JobResult& job : results_.jobs)
     EXPECT_TRUE(fs::is_regular_file(run_dir_ / "report" / (job.slug + ".html"))) << job.slug;
 }
 
 TEST_F(ReportCommand, ComparesWithThePreviousRunAndTrendsFromTheHistoryDatabase) {
   const fs::path db_path = dir_ / "history.sqlite";
   {
-    reports::RunResults previous =
+    results::RunResults previous =
         syntheticReportResults("20261121-100405-smoke-00000000", "fedcba9876543210");
     previous.run.started = "2026-11-21T10:04:05Z";
     previous.jobs[1].metrics[0].second = 0.001;  // relmse of the pcf job doubled since
-    reports::HistoryDatabase::open(db_path).append(previous);
+    results::HistoryDatabase::open(db_path).append(previous);
   }
   const CommandResult r = runGibench(
       {"report", run_dir_.string(), "--db", db_path.string(), "--trend-runs", "5"}, dir_.path());

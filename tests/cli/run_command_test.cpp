@@ -1,8 +1,8 @@
 // `gibench run` end to end on a tiny suite: results, store reuse, resume after an interruption,
 // and the bad inputs that must stop a run before it writes anything.
 #include "support/run_command.h"
-#include "reports/results.h"
-#include "reports/results_json.h"
+#include "results/results.h"
+#include "results/results_json.h"
 #include "support/temp_dir.h"
 
 #include <gmock/gmock.h>
@@ -93,7 +93,7 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
   const fs::path out = dir_ / "run1";
   const test::CommandResult r = run(out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const reports::RunResults results = reports::readResultsFile(out / "results.json");
+  const results::RunResults results = results::readResultsFile(out / "results.json");
   ASSERT_EQ(results.jobs.size(), 3u);
   EXPECT_EQ(results.run.suite, "tiny");
   EXPECT_TRUE(results.run.complete);
@@ -101,7 +101,7 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
   EXPECT_EQ(results.tolerances.forMetric("relmse").relative, 0.1);
   ASSERT_EQ(results.paper.size(), 1u);
 
-  const reports::JobResult& reference = results.jobs[0];
+  const results::JobResult& reference = results.jobs[0];
   EXPECT_EQ(reference.id, "cornell-reference");
   ASSERT_TRUE(reference.convergence.has_value());
   ASSERT_EQ(reference.convergence->points.size(), 3u);
@@ -114,7 +114,7 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
   EXPECT_FALSE(reference.reference.store_hit);
 
   for (const std::size_t i : {1u, 2u}) {
-    const reports::JobResult& direct = results.jobs[i];
+    const results::JobResult& direct = results.jobs[i];
     EXPECT_EQ(direct.technique, "direct");
     EXPECT_EQ(direct.path_class, "LE + LDE");
     EXPECT_EQ(direct.reference.path_class, "LE + LDE");
@@ -126,7 +126,7 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
     EXPECT_TRUE(direct.frameMedianMs().has_value());
     // Direct light leaves out indirect light: farther from the full reference than its own.
     // (relMSE, not MSE: MSE is dominated by the bright emitter's edge pixels at this size.)
-    auto relmse = [](const reports::NamedValues& values) {
+    auto relmse = [](const results::NamedValues& values) {
       for (const auto& [name, value] : values)
         if (name == "relmse") return value;
       return -1.0;
@@ -152,8 +152,8 @@ TEST_F(RunCommandTest, ALaterRunReusesTheStoredReferences) {
   ASSERT_EQ(run(dir_ / "first").exit_code, 0);
   const test::CommandResult r = run(dir_ / "second");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const reports::RunResults first = reports::readResultsFile(dir_ / "first");
-  const reports::RunResults second = reports::readResultsFile(dir_ / "second");
+  const results::RunResults first = results::readResultsFile(dir_ / "first");
+  const results::RunResults second = results::readResultsFile(dir_ / "second");
   EXPECT_NE(first.run.id, second.run.id);
   for (std::size_t i = 0; i < second.jobs.size(); ++i) {
     EXPECT_TRUE(second.jobs[i].reference.store_hit) << second.jobs[i].id;
@@ -167,8 +167,8 @@ TEST_F(RunCommandTest, ParallelJobsMeasureTheSame) {
   ASSERT_EQ(run(dir_ / "serial").exit_code, 0);
   const test::CommandResult r = run(dir_ / "parallel", {"--jobs", "2"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const reports::RunResults serial = reports::readResultsFile(dir_ / "serial");
-  const reports::RunResults parallel = reports::readResultsFile(dir_ / "parallel");
+  const results::RunResults serial = results::readResultsFile(dir_ / "serial");
+  const results::RunResults parallel = results::readResultsFile(dir_ / "parallel");
   ASSERT_EQ(parallel.jobs.size(), serial.jobs.size());
   for (std::size_t i = 0; i < serial.jobs.size(); ++i)
     EXPECT_EQ(parallel.jobs[i].metrics, serial.jobs[i].metrics) << serial.jobs[i].id;
@@ -202,14 +202,14 @@ TEST_F(RunCommandTest, AnInterruptedRunIsResumed) {
   ASSERT_TRUE(fs::exists(first_result)) << readFile(log);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be interrupted";
   EXPECT_FALSE(fs::exists(out / "results.json"));
-  const reports::JobResult recorded = reports::readJobFile(first_result);
+  const results::JobResult recorded = results::readJobFile(first_result);
 
   const test::CommandResult r = run(out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("resuming run"));
   EXPECT_THAT(r.err, HasSubstr("cornell-reference: finished by an earlier attempt, skipped"));
   EXPECT_THAT(r.out, HasSubstr("2 run, 1 finished earlier"));
-  const reports::RunResults results = reports::readResultsFile(out);
+  const results::RunResults results = results::readResultsFile(out);
   ASSERT_EQ(results.jobs.size(), 3u);
   EXPECT_EQ(results.jobs[0], recorded);
   for (const fs::directory_entry& entry : fs::recursive_directory_iterator(out))
@@ -220,11 +220,11 @@ TEST_F(RunCommandTest, AnInterruptedRunIsResumed) {
 TEST_F(RunCommandTest, ARerunOfAFinishedRunRunsNothing) {
   const fs::path out = dir_ / "done";
   ASSERT_EQ(run(out).exit_code, 0);
-  const reports::RunResults before = reports::readResultsFile(out);
+  const results::RunResults before = results::readResultsFile(out);
   const test::CommandResult r = run(out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("0 run, 3 finished earlier"));
-  const reports::RunResults after = reports::readResultsFile(out);
+  const results::RunResults after = results::readResultsFile(out);
   EXPECT_EQ(after.run.id, before.run.id);
   EXPECT_EQ(after.jobs, before.jobs);
 }
@@ -237,7 +237,7 @@ TEST_F(RunCommandTest, OnlyAndListSelectJobs) {
   const fs::path out = dir_ / "subset";
   const test::CommandResult r = run(out, {"--only", "cornell-direct/*"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const reports::RunResults results = reports::readResultsFile(out);
+  const results::RunResults results = results::readResultsFile(out);
   ASSERT_EQ(results.jobs.size(), 2u);
   EXPECT_FALSE(results.run.complete);
 }

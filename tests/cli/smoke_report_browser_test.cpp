@@ -1,8 +1,8 @@
 // The smoke suite's report, end to end: `gibench run` on suites/smoke.toml (shrunk to 32x32 and
 // 64 spp so the test stays quick, everything else as shipped), then every page of its report in
 // headless Chromium: no console errors, every image decoded and every chart drawn.
-#include "reports/results.h"
-#include "reports/results_json.h"
+#include "results/results.h"
+#include "results/results_json.h"
 #include "support/headless_browser.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
@@ -41,10 +41,10 @@ TEST(SmokeReport, EveryPageLoadsInABrowserAndPassesItsSelfCheck) {
                          dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
-  const reports::RunResults results = reports::readResultsFile(run);
+  const results::RunResults results = results::readResultsFile(run);
   ASSERT_EQ(results.run.suite, "smoke");
   std::vector<fs::path> pages = {run / "index.html"};
-  for (const reports::JobResult& job : results.jobs)
+  for (const results::JobResult& job : results.jobs)
     pages.push_back(run / "report" / (job.slug + ".html"));
   for (const fs::path& page : pages) {
     SCOPED_TRACE(page.string());

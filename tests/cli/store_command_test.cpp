@@ -1,6 +1,6 @@
 // `gibench store list|verify|gc` as a user runs it, on a store filled by the library.
 #include "common/cache_paths.h"
-#include "reports/history_db.h"
+#include "results/history_db.h"
 #include "support/reference_store_fixtures.h"
 #include "support/run_command.h"
 #include "support/synthetic_results.h"
@@ -129,9 +129,9 @@ TEST(StoreCommand, GcKeepsTheReferencesOfRecordedRuns) {
   TempDir dir;
   FilledStore store(dir);
   // A run in the store's history database that used the cornell entry.
-  reports::JobResult job = syntheticJob("cornell-direct", {{"relmse", 0.01}});
+  results::JobResult job = syntheticJob("cornell-direct", {{"relmse", 0.01}});
   job.reference.key = store.cornell.entry.key;
-  reports::HistoryDatabase::open(historyDatabasePath(store.root))
+  results::HistoryDatabase::open(historyDatabasePath(store.root))
       .append(syntheticRun("20261122-000000-smoke-00000000", {job}));
   CommandResult gc = runGibench({"store", "gc", "--store", store.root.string()}, dir.path());
   ASSERT_EQ(gc.exit_code, 0) << gc.err;

@@ -323,13 +323,14 @@ TEST_F(PassProfilerTest, ARealProfileSummarisesIntoATable) {
     profiler.endFrame();
   }
   const ProfileRecord record = profiler.finish();
-  const std::vector<metrics::PassTimingRow> rows = metrics::summarizeProfile(record);
+  const metrics::PassTimings timings = metrics::summarizeProfile(record);
+  const std::vector<metrics::PassTiming>& rows = timings.passes;
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[2].path, "frame/lighting/shadow map");
   EXPECT_EQ(rows[2].calls_per_frame, 2.0);
   EXPECT_GT(rows[1].share, 0.0);
   EXPECT_LE(rows[1].share + rows[3].share, 1.0);
-  const std::string table = metrics::formatPassTable(record, rows);
+  const std::string table = metrics::formatPassTable(timings);
   EXPECT_NE(table.find("    shadow map"), std::string::npos) << table;
   EXPECT_NE(table.find("2 warm-up and 4 measured frames"), std::string::npos) << table;
 }

@@ -33,14 +33,14 @@ class HtmlReportBrowser : public ::testing::Test {
 
   test::TempDir dir_;
   fs::path run_dir_ = dir_.path();
-  RunResults results_;
+  results::RunResults results_;
   fs::path index_;
 };
 
 TEST_F(HtmlReportBrowser, EveryPageLoadsWithoutConsoleErrorsAndPassesItsSelfCheck) {
   GIB_REQUIRE_CHROMIUM(chromium);
   std::vector<fs::path> pages = {index_};
-  for (const JobResult& job : results_.jobs)
+  for (const results::JobResult& job : results_.jobs)
     pages.push_back(run_dir_ / "report" / (job.slug + ".html"));
   for (const fs::path& page : pages) {
     SCOPED_TRACE(page.string());
@@ -53,7 +53,7 @@ TEST_F(HtmlReportBrowser, EveryPageLoadsWithoutConsoleErrorsAndPassesItsSelfChec
 
 TEST_F(HtmlReportBrowser, APageWithAMissingPictureFailsItsSelfCheck) {
   GIB_REQUIRE_CHROMIUM(chromium);
-  const JobResult& job = results_.jobs[1];
+  const results::JobResult& job = results_.jobs[1];
   fs::remove(run_dir_ / job.outputs.flip_png);  // a report copied without one of its images
   const test::LoadedPage loaded =
       test::loadPage(*chromium, run_dir_ / "report" / (job.slug + ".html"), dir_.path());

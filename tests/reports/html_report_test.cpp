@@ -54,14 +54,14 @@ class HtmlReport : public ::testing::Test {
   }
 
   test::TempDir dir_;
-  RunResults results_;
+  results::RunResults results_;
 };
 
 TEST_F(HtmlReport, WritesAWellFormedIndexAndOnePagePerJobWhoseLinksResolve) {
   const fs::path index = write();
   EXPECT_EQ(index, dir_ / "index.html");
   std::vector<fs::path> pages = {index};
-  for (const JobResult& job : results_.jobs)
+  for (const results::JobResult& job : results_.jobs)
     pages.push_back(dir_ / "report" / (job.slug + ".html"));
   for (const fs::path& page : pages) {
     ASSERT_TRUE(fs::is_regular_file(page)) << page;
@@ -75,7 +75,7 @@ TEST_F(HtmlReport, WritesAWellFormedIndexAndOnePagePerJobWhoseLinksResolve) {
       }
   }
   const std::string html = readText(index);
-  for (const JobResult& job : results_.jobs)
+  for (const results::JobResult& job : results_.jobs)
     EXPECT_NE(html.find("href=\"report/" + job.slug + ".html\""), std::string::npos) << job.id;
   // Nothing but the report was added: no temporary files left beside the pages.
   std::size_t report_files = 0;
@@ -222,7 +222,7 @@ TEST_F(HtmlReport, ValuesAreColouredAgainstThePreviousRunAndRegressionsListed) {
 TEST_F(HtmlReport, TrendChartsFollowTheJobOverTheHistory) {
   ReportContext context;
   for (int i = 0; i < 3; ++i) {
-    RunResults run = test::syntheticReportResults("run-" + std::to_string(i),
+    results::RunResults run = test::syntheticReportResults("run-" + std::to_string(i),
                                                   "abcdef" + std::to_string(i) + "00");
     run.jobs[1].metrics[0].second = 0.001 * (i + 1);
     context.history.push_back(run);
@@ -250,11 +250,11 @@ TEST_F(HtmlReport, TrendChartsFollowTheJobOverTheHistory) {
 
 TEST_F(HtmlReport, SlugsThatAreNotFileNamesAreInputErrorsAndNothingIsWritten) {
   for (const std::string slug : {"../escape", "", "a/b", ".."}) {
-    RunResults bad = results_;
+    results::RunResults bad = results_;
     bad.jobs[1].slug = slug;
     EXPECT_THROW(writeHtmlReport(dir_.path(), bad, {}), InputError) << slug;
   }
-  RunResults twice = results_;
+  results::RunResults twice = results_;
   twice.jobs[2].slug = twice.jobs[1].slug;
   try {
     writeHtmlReport(dir_.path(), twice, {});

@@ -8,16 +8,16 @@
 namespace gib::reports {
 namespace {
 
-RunResults runOn(const std::string& suite, int day) {
-  RunResults run = test::syntheticReportResults(suite + "-" + std::to_string(day));
+results::RunResults runOn(const std::string& suite, int day) {
+  results::RunResults run = test::syntheticReportResults(suite + "-" + std::to_string(day));
   run.run.suite = suite;
   run.run.started = "2026-11-" + std::to_string(10 + day) + "T10:00:00Z";
   return run;
 }
 
-std::vector<std::string> ids(const std::vector<RunResults>& runs) {
+std::vector<std::string> ids(const std::vector<results::RunResults>& runs) {
   std::vector<std::string> out;
-  for (const RunResults& run : runs) out.push_back(run.run.id);
+  for (const results::RunResults& run : runs) out.push_back(run.run.id);
   return out;
 }
 
@@ -28,11 +28,11 @@ class ReportContextTest : public ::testing::Test {
     db_.append(runOn("nightly", 2));  // another suite: neither previous nor trend
   }
   test::TempDir dir_;
-  HistoryDatabase db_ = HistoryDatabase::open(dir_ / "history.sqlite");
+  results::HistoryDatabase db_ = results::HistoryDatabase::open(dir_ / "history.sqlite");
 };
 
 TEST_F(ReportContextTest, ARunNotYetRecordedIsComparedWithTheNewestEarlierRunOfItsSuite) {
-  const RunResults next = runOn("smoke", 4);
+  const results::RunResults next = runOn("smoke", 4);
   const ReportContext context = loadReportContext(db_, next, 3);
   ASSERT_TRUE(context.previous.has_value());
   EXPECT_EQ(context.previous->run.id, "smoke-3");

@@ -465,7 +465,7 @@ TEST_F(SuiteFileTest, SceneFileTakesNoSceneSet) {
 // The suites of the repository parse, and the nightly suite keeps up with the registries.
 TEST_F(SuiteFileTest, TolerancesDefaultAndPerMetric) {
   const Suite plain = load(kSuite);
-  EXPECT_EQ(plain.tolerances, reports::Tolerances{});
+  EXPECT_EQ(plain.tolerances, results::Tolerances{});
   const Suite suite = load(std::string(kSuite) + R"(
 [tolerances]
 default = { relative = 0.02 }
@@ -474,12 +474,12 @@ flip_mean = { absolute = 0.001 }
 frame_time = { relative = 0.2, significance = 0.001 }
 )");
   EXPECT_EQ(suite.tolerances.metric_default.relative, 0.02);
-  EXPECT_EQ(suite.tolerances.forMetric("relmse"), (reports::Tolerance{1e-4, 0.1}));
+  EXPECT_EQ(suite.tolerances.forMetric("relmse"), (results::Tolerance{1e-4, 0.1}));
   // A key given alone keeps the built-in default of the other.
   EXPECT_EQ(suite.tolerances.forMetric("flip_mean"),
-            (reports::Tolerance{0.001, reports::Tolerance{}.relative}));
+            (results::Tolerance{0.001, results::Tolerance{}.relative}));
   EXPECT_EQ(suite.tolerances.forMetric("ssim").relative, 0.02);
-  EXPECT_EQ(suite.tolerances.timing, (reports::TimingTolerance{0.2, 0.001}));
+  EXPECT_EQ(suite.tolerances.timing, (results::TimingTolerance{0.2, 0.001}));
 }
 
 TEST_F(SuiteFileTest, BadTolerances) {
@@ -506,7 +506,7 @@ source = "A paper, Table 1"
 note = "an old GPU"
 )");
   ASSERT_EQ(suite.paper.size(), 1u);
-  EXPECT_EQ(suite.paper[0], (reports::PaperValue{"direct-sweep/shadow=pcf", "frame", 12.5, "ms",
+  EXPECT_EQ(suite.paper[0], (results::PaperValue{"direct-sweep/shadow=pcf", "frame", 12.5, "ms",
                                                  "A paper, Table 1", "an old GPU"}));
   const std::string wrong_job = std::string(kSuite) + R"(
 [[paper]]
@@ -526,6 +526,36 @@ source = "A paper"
   EXPECT_THAT(errorOf(no_value), HasSubstr("value"));
 }
 
+// Pass names are each technique's declared interface: a figure that names a pass the technique
+// does not declare (a renamed pass, a typo) is refused where it is written, not left without its
+// numbers in the report.
+TEST_F(SuiteFileTest, PassesMustBeDeclaredByTheTechnique) {
+  auto paper = [](const std::string& job, const std::string& quantity) {
+    return std::string(kSuite) + "\n[[paper]]\njob = \"" + job + "\"\nquantity = \"" + quantity +
+           "\"\nvalue = 1\nsource = \"A paper\"\n";
+  };
+  EXPECT_EQ(load(paper("direct-sweep/shadow=pcf", "frame/lights/shadow map + shading")).paper.size(),
+            1u);
+  EXPECT_EQ(load(paper("direct-sweep/shadow=pcf", "g-buffer + relmse")).paper.size(), 1u);
+  const std::string message = expectErrorAt(
+      paper("direct-sweep/shadow=pcf", "frame/lights/relight cube maps"), "quantity = ");
+  EXPECT_THAT(message, HasSubstr("names the pass 'frame/lights/relight cube maps', which "
+                                 "technique 'direct' does not declare"));
+  EXPECT_THAT(message, HasSubstr("frame/lights/shadow map"));  // the fix lists the declared ones
+  EXPECT_THAT(expectErrorAt(paper("direct-sweep/shadow=hard", "iteration/update"), "quantity = "),
+              HasSubstr("does not declare"));
+  EXPECT_THAT(expectErrorAt(paper("cornell-reference", "frame"), "quantity = "),
+              HasSubstr("reference jobs are not timed"));
+
+  const std::string chart = std::string(kSuite) + "\n[[chart]]\ntitle = \"t\"\n";
+  EXPECT_THAT(expectErrorAt(chart + "x = \"parameter:shadow\"\ny = \"shadow maps\"\n", "y = "),
+              HasSubstr("chart.y 'shadow maps' names the pass 'shadow maps'"));
+  EXPECT_THAT(
+      expectErrorAt(chart + "jobs = \"cornell-reference\"\nx = \"frame\"\ny = \"relmse\"\n",
+                    "x = "),
+      HasSubstr("reference jobs are not timed"));
+}
+
 TEST_F(SuiteFileTest, ChartsNameQuantitiesAndJobsOfTheSuite) {
   const Suite suite = load(std::string(kSuite) + R"(
 [[chart]]
@@ -538,7 +568,7 @@ log_y = true
 front = true
 )");
   ASSERT_EQ(suite.charts.size(), 1u);
-  const reports::ChartSpec& c = suite.charts[0];
+  const results::ChartSpec& c = suite.charts[0];
   EXPECT_EQ(c.title, "Frame time by shadow filter");
   EXPECT_EQ(c.jobs, "direct-sweep/*");
   EXPECT_EQ(c.x, "parameter:light_samples");

@@ -2,6 +2,7 @@
 
 #include "image/display.h"
 #include "image/image.h"
+#include "support/synthetic_timings.h"
 
 #include <cmath>
 #include <limits>
@@ -12,13 +13,6 @@ namespace {
 
 constexpr int kWidth = 32, kHeight = 24;
 
-struct PassSpec {
-  const char* path;
-  int depth;
-  double median_ms;
-  double calls;
-};
-
 // Frame samples spread ±10% around the median, deterministically.
 std::vector<double> samples(double median, int frames) {
   std::vector<double> out;
@@ -26,9 +20,9 @@ std::vector<double> samples(double median, int frames) {
   return out;
 }
 
-reports::JobOutputs outputsOf(const std::string& slug, bool reference_job) {
+results::JobOutputs outputsOf(const std::string& slug, bool reference_job) {
   const std::string dir = "jobs/" + slug + "/";
-  reports::JobOutputs out;
+  results::JobOutputs out;
   out.image = dir + "image.exr";
   out.image_png = dir + "image.png";
   out.reference_png = dir + "reference.png";
@@ -53,9 +47,9 @@ std::string slugOf(const std::string& id) {
 }
 
 // What every job of the synthetic run shares: the Cornell box at the small picture size.
-reports::JobResult cornellJob(const std::string& id, const std::string& case_name,
+results::JobResult cornellJob(const std::string& id, const std::string& case_name,
                               const std::string& technique) {
-  reports::JobResult job;
+  results::JobResult job;
   job.id = id;
   job.slug = slugOf(id);
   job.case_name = case_name;
@@ -68,52 +62,34 @@ reports::JobResult cornellJob(const std::string& id, const std::string& case_nam
 
 }  // namespace
 
-nlohmann::ordered_json nestedPassTimings(double scale, int frames) {
-  const PassSpec specs[] = {{"frame", 0, 20.0, 1},
-                            {"frame/gbuffer", 1, 3.0, 1},
-                            {"frame/shadow_maps", 1, 6.0, 4},
-                            {"frame/shadow_maps/cube_faces", 2, 5.0, 24},
-                            {"frame/shading", 1, 10.0, 4}};
-  nlohmann::ordered_json passes = nlohmann::ordered_json::array();
-  for (const PassSpec& spec : specs) {
-    const std::string path = spec.path;
-    const double median = spec.median_ms * scale;
-    passes.push_back({{"name", path.substr(path.rfind('/') + 1)},
-                      {"path", path},
-                      {"depth", spec.depth},
-                      {"median_ms", median},
-                      {"first_quartile_ms", 0.95 * median},
-                      {"third_quartile_ms", 1.05 * median},
-                      {"min_ms", 0.9 * median},
-                      {"max_ms", 1.1 * median},
-                      {"mad_ms", 0.05 * median},
-                      {"gpu_median_ms", nullptr},
-                      {"cpu_median_ms", median},
-                      {"share", spec.median_ms / specs[0].median_ms},
-                      {"calls_per_frame", spec.calls},
-                      {"gpu_ms", nlohmann::ordered_json::array()},
-                      {"cpu_ms", samples(median, frames)}});
-  }
-  return {{"clock", "cpu"},
-          {"clock_description", "CPU wall clock around glFinish (precise mode)"},
-          {"precise", true},
-          {"warmup_frames", 2},
-          {"measured_frames", frames},
-          {"frame_rate_fps", 1000.0 / (20.0 * scale)},
-          {"passes", std::move(passes)}};
+metrics::PassTimings nestedPassTimings(double scale, int frames, const std::string& root) {
+  struct Spec {
+    const char* path;  // under the root
+    double median_ms;
+    int calls;
+  };
+  const Spec specs[] = {{"", 20.0, 1},
+                        {"/gbuffer", 3.0, 1},
+                        {"/shadow_maps", 6.0, 4},
+                        {"/shadow_maps/cube_faces", 5.0, 24},
+                        {"/shading", 10.0, 4}};
+  std::vector<SyntheticPass> passes;
+  for (const Spec& spec : specs)
+    passes.push_back({root + spec.path, samples(spec.median_ms * scale, frames), spec.calls});
+  return syntheticTimings(passes, "cpu");
 }
 
-reports::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse,
+results::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse,
                                          double frame_scale) {
-  reports::JobResult job = cornellJob("cornell-direct/" + sweep, "cornell-direct", "direct");
+  results::JobResult job = cornellJob("cornell-direct/" + sweep, "cornell-direct", "direct");
   job.scene_hash = "5f1e0c2b9a8d7e6f5f1e0c2b9a8d7e6f";
   job.parameters = {{"shadow", "pcf"}, {"light_samples", "4"}};
   job.path_class = "LE + LDE";
   job.reference = {"ref-direct-0001", 256, 0, "LE + LDE", true, 0};
   job.metrics = {{"relmse", relmse}, {"flip_mean", 0.08}, {"psnr", 31.5}};
-  job.full_reference = reports::ReferenceUse{"ref-all-0001", 256, 0, "all paths", false, 12.5};
+  job.full_reference = results::ReferenceUse{"ref-all-0001", 256, 0, "all paths", false, 12.5};
   job.metrics_full = {{"relmse", 4 * relmse}, {"flip_mean", 0.21}, {"psnr", 22.0}};
-  reports::Convergence convergence;
+  results::Convergence convergence;
   convergence.x_label = "iterations";
   for (int i = 0; i < 5; ++i) {
     const double x = std::pow(2.0, i);
@@ -134,9 +110,9 @@ reports::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse
   return job;
 }
 
-reports::RunResults syntheticReportResults(const std::string& run_id, const std::string& commit) {
-  reports::RunResults results;
-  reports::RunInfo& run = results.run;
+results::RunResults syntheticReportResults(const std::string& run_id, const std::string& commit) {
+  results::RunResults results;
+  results::RunInfo& run = results.run;
   run.id = run_id;
   run.suite = "smoke";
   run.suite_description = "Cornell box: reference and direct <shadow maps> & friends";
@@ -156,24 +132,24 @@ reports::RunResults syntheticReportResults(const std::string& run_id, const std:
   run.store = "/tmp/store";
   results.primary_metric = "relmse";
 
-  reports::JobResult reference = cornellJob("cornell-reference", "cornell-reference", "reference");
+  results::JobResult reference = cornellJob("cornell-reference", "cornell-reference", "reference");
   reference.path_class = "all paths";
   reference.reference = {"ref-all-0001", 256, 0, "all paths", false, 12.5};
   reference.metrics = {{"relmse", 0.0009}, {"flip_mean", 0.02}, {"psnr", 41.0}};
-  reports::Convergence spp;
+  results::Convergence spp;
   spp.x_label = "spp";
   for (double x : {16.0, 64.0, 256.0}) spp.points.push_back({x, {{"relmse", 0.2 / x}}, 0.01 * x});
   spp.fit_metric = "relmse";
   spp.fit_slope = -1.0;
   spp.fit_slope_ci95 = 0.01;
   reference.convergence = spp;
-  reference.timings = nullptr;  // the reference renderer is not timed per pass
+  reference.timings.reset();  // the reference renderer is not timed per pass
   reference.outputs = outputsOf(reference.slug, true);
   reference.seconds = 12.5;
   results.jobs.push_back(reference);
 
   results.jobs.push_back(syntheticTechniqueJob("shadow=pcf,light_samples=4", 0.0021));
-  reports::JobResult vsm = syntheticTechniqueJob("shadow=vsm,light_samples=4", 0.0035, 1.5);
+  results::JobResult vsm = syntheticTechniqueJob("shadow=vsm,light_samples=4", 0.0035, 1.5);
   vsm.parameters[0].second = "vsm";
   vsm.convergence->points.resize(2);
   vsm.convergence->fit_slope_ci95 = std::numeric_limits<double>::infinity();
@@ -181,16 +157,10 @@ reports::RunResults syntheticReportResults(const std::string& run_id, const std:
 
   // The PCF job also iterates, with per-iteration passes, counts and an auxiliary image, so the
   // report's figure parts are exercised.
-  reports::JobResult& pcf_job = results.jobs[1];
+  results::JobResult& pcf_job = results.jobs[1];
   pcf_job.iterations = 8;
   pcf_job.iterate_ms = 16.0;
-  pcf_job.iteration_timings = nestedPassTimings(0.1, 8);
-  for (auto& pass : pcf_job.iteration_timings["passes"]) {
-    std::string path = pass["path"];
-    path.replace(0, 5, "iteration");  // "frame…" → "iteration…"
-    pass["path"] = path;
-    if (pass["depth"] == 0) pass["name"] = "iteration";
-  }
+  pcf_job.iteration_timings = nestedPassTimings(0.1, 8, "iteration");
   pcf_job.statistics = {{"vertices", 3000}, {"atlas_texels", 16000}};
   vsm.statistics = {{"vertices", 300}, {"atlas_texels", 16000}};
   results.jobs[2].statistics = vsm.statistics;
@@ -208,13 +178,13 @@ reports::RunResults syntheticReportResults(const std::string& run_id, const std:
 }
 
 void writeSyntheticOutputs(const std::filesystem::path& run_dir,
-                           const reports::RunResults& results) {
-  for (const reports::JobResult& job : results.jobs) {
-    const reports::JobOutputs& out = job.outputs;
+                           const results::RunResults& results) {
+  for (const results::JobResult& job : results.jobs) {
+    const results::JobOutputs& out = job.outputs;
     int variant = 0;
     std::vector<const std::string*> pngs = {&out.image_png, &out.reference_png, &out.difference_png,
                                             &out.flip_png};
-    for (const reports::AuxiliaryImageOutput& aux : job.auxiliary_images) pngs.push_back(&aux.png);
+    for (const results::AuxiliaryImageOutput& aux : job.auxiliary_images) pngs.push_back(&aux.png);
     for (const std::string* path : pngs) {
       ++variant;
       if (path->empty()) continue;

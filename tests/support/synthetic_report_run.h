@@ -2,33 +2,34 @@
 // benchmarks: small PNGs under jobs/<slug>/ and results covering every part of a report.
 #pragma once
 
-#include "reports/results.h"
+#include "results/results.h"
 
 #include <filesystem>
 #include <string>
 
 namespace gib::test {
 
-// Per-pass timings in the shape of metrics::passTimingsJson: a frame with nested passes
-// (g-buffer; shadow maps with a cube child; shading), every per-frame sample included. `scale`
-// multiplies every time.
-nlohmann::ordered_json nestedPassTimings(double scale = 1.0, int frames = 8);
+// Per-pass timings of a frame with nested passes (g-buffer; shadow maps with a cube child;
+// shading), every per-frame sample included, on the CPU clock. `scale` multiplies every time;
+// `root` is "frame" or "iteration".
+metrics::PassTimings nestedPassTimings(double scale = 1.0, int frames = 8,
+                                       const std::string& root = "frame");
 
 // A technique job on cornell with metrics against the class and the full reference, nested pass
 // timings, a convergence series over iterations with its fit, and the given output files
 // (jobs/<slug>/…; not written here).
-reports::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse,
+results::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse,
                                          double frame_scale = 1.0);
 
 // The run of three jobs (run id `run_id`, commit `commit`): the Cornell reference (no timings,
 // no FLIP map, convergence over spp), `direct` with shadow=pcf (every output, paper values for
 // relmse and the frame) and `direct` with shadow=vsm (a two-point convergence, so no interval).
-reports::RunResults syntheticReportResults(
+results::RunResults syntheticReportResults(
     const std::string& run_id = "20261122-100405-smoke-1a2b3c4d",
     const std::string& commit = "0123456789abcdef");
 
 // Writes the PNGs every job of `results` lists (a few pixels each) under `run_dir`.
 void writeSyntheticOutputs(const std::filesystem::path& run_dir,
-                           const reports::RunResults& results);
+                           const results::RunResults& results);
 
 }  // namespace gib::test

@@ -1,5 +1,7 @@
 #include "support/synthetic_results.h"
 
+#include "support/synthetic_timings.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,29 +24,9 @@ std::vector<double> noisyFrameTimes(std::uint64_t seed, int frames, double media
   return samples;
 }
 
-nlohmann::ordered_json frameTimingsJson(const std::vector<double>& samples_ms,
-                                        const std::string& clock) {
-  std::vector<double> sorted = samples_ms;
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t n = sorted.size();
-  const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-  const std::vector<double> none;
-  return {{"clock", clock},
-          {"precise", true},
-          {"warmup_frames", 2},
-          {"measured_frames", n},
-          {"passes",
-           {{{"name", "frame"},
-             {"path", "frame"},
-             {"depth", 0},
-             {"median_ms", median},
-             {"gpu_ms", clock == "gpu" ? samples_ms : none},
-             {"cpu_ms", clock == "cpu" ? samples_ms : none}}}}};
-}
-
-reports::JobResult syntheticJob(const std::string& id, const reports::NamedValues& metrics,
+results::JobResult syntheticJob(const std::string& id, const results::NamedValues& metrics,
                                 const std::vector<double>& frame_samples_ms) {
-  reports::JobResult job;
+  results::JobResult job;
   job.id = id;
   job.slug = id;
   std::replace(job.slug.begin(), job.slug.end(), '/', '_');
@@ -58,14 +40,14 @@ reports::JobResult syntheticJob(const std::string& id, const reports::NamedValue
   job.path_class = "LE + LDE";
   job.reference = {"ref-key-direct", 256, 7, "LE + LDE", true, 0.0};
   job.metrics = metrics;
-  if (!frame_samples_ms.empty()) job.timings = frameTimingsJson(frame_samples_ms);
+  if (!frame_samples_ms.empty()) job.timings = frameTimings(frame_samples_ms);
   job.seconds = 1.5;
   job.job_hash = "hash-" + id;
   return job;
 }
 
-reports::RunResults syntheticRun(const std::string& id, std::vector<reports::JobResult> jobs) {
-  reports::RunResults run;
+results::RunResults syntheticRun(const std::string& id, std::vector<results::JobResult> jobs) {
+  results::RunResults run;
   run.run.id = id;
   run.run.suite = "unit";
   run.run.started = "2026-11-22T10:04:05Z";
@@ -76,17 +58,17 @@ reports::RunResults syntheticRun(const std::string& id, std::vector<reports::Job
   return run;
 }
 
-reports::RunResults richResults() {
+results::RunResults richResults() {
   const double inf = std::numeric_limits<double>::infinity();
 
-  reports::JobResult technique = syntheticJob(
+  results::JobResult technique = syntheticJob(
       "cornell-direct/shadow=pcf", {{"relmse", 0.0123}, {"flip_mean", 0.071}, {"psnr", inf}},
       noisyFrameTimes(1, 16, 4.2));
   technique.scene_parameters = {{"light_scale", "1.5"}, {"name", "with \"quotes\", commas"}};
-  technique.full_reference = reports::ReferenceUse{"ref-key-full", 1024,  18446744073709551615ull,
+  technique.full_reference = results::ReferenceUse{"ref-key-full", 1024,  18446744073709551615ull,
                                                    "all paths",    false, 12.25};
   technique.metrics_full = {{"relmse", 0.25}, {"ssim", 0.91}};
-  reports::Convergence convergence;
+  results::Convergence convergence;
   convergence.x_label = "iterations";
   convergence.points = {{1, {{"relmse", 0.5}}, 0.01}, {4, {{"relmse", 0.125}}, 0.04}};
   convergence.fit_metric = "relmse";
@@ -100,14 +82,12 @@ reports::RunResults richResults() {
   technique.iterations = 4;
   technique.outputs = {"jobs/a.exr",    "jobs/a.png",    "jobs/ref.png",
                        "jobs/diff.png", "jobs/flip.png", "jobs/a-timings.json"};
-  technique.iteration_timings = frameTimingsJson({1.5, 2.0, 2.5, 3.0}, "cpu");
-  technique.iteration_timings["passes"][0]["name"] = "iteration";
-  technique.iteration_timings["passes"][0]["path"] = "iteration";
+  technique.iteration_timings = frameTimings({1.5, 2.0, 2.5, 3.0}, "cpu", "iteration");
   technique.statistics = {{"vertices", 1536}, {"atlas_texels", 12000}};
   technique.auxiliary_images = {
       {"atlas", "the radiance atlas", "jobs/a-atlas.exr", "jobs/a-atlas.png"}};
 
-  reports::JobResult reference;
+  results::JobResult reference;
   reference.id = "cornell-reference";
   reference.slug = "cornell-reference";
   reference.case_name = "cornell-reference";
@@ -119,7 +99,7 @@ reports::RunResults richResults() {
   reference.reference = {"ref-key-full", 1024, 3, "all paths", false, 12.25};
   reference.metrics = {{"relmse", -inf}};
 
-  reports::RunResults run = syntheticRun("20261122-100405-unit-0a1b2c3d", {technique, reference});
+  results::RunResults run = syntheticRun("20261122-100405-unit-0a1b2c3d", {technique, reference});
   run.run.suite_description = "synthetic results";
   run.run.suite_file = "suites/unit.toml";
   run.run.suite_hash = "feedbeef";

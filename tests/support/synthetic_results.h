@@ -2,9 +2,7 @@
 // commands that read them: no rendering, every field chosen by the test.
 #pragma once
 
-#include "reports/results.h"
-
-#include <nlohmann/json.hpp>
+#include "results/results.h"
 
 #include <cstdint>
 #include <string>
@@ -18,20 +16,16 @@ namespace gib::test {
 std::vector<double> noisyFrameTimes(std::uint64_t seed, int frames, double median_ms,
                                     double relative_noise = 0.03);
 
-// metrics::passTimingsJson's shape for a frame pass with these samples on `clock`.
-nlohmann::ordered_json frameTimingsJson(const std::vector<double>& samples_ms,
-                                        const std::string& clock = "gpu");
-
 // A technique job on cornell with the given metric values and, when given, frame samples.
-reports::JobResult syntheticJob(const std::string& id, const reports::NamedValues& metrics,
+results::JobResult syntheticJob(const std::string& id, const results::NamedValues& metrics,
                                 const std::vector<double>& frame_samples_ms = {});
 
 // A run of `jobs` with plain metadata.
-reports::RunResults syntheticRun(const std::string& id, std::vector<reports::JobResult> jobs);
+results::RunResults syntheticRun(const std::string& id, std::vector<results::JobResult> jobs);
 
 // A run with every optional part present (full reference, convergence, timings, paper values,
 // per-metric tolerances, infinite values) beside a reference job where they are absent. No NaN,
 // so that operator== can compare a round trip.
-reports::RunResults richResults();
+results::RunResults richResults();
 
 }  // namespace gib::test

@@ -23,7 +23,7 @@ gl::Context& benchContext() {
 
 void reportPasses(benchmark::State& state, gl::PassProfiler& profiler, gl::Context& context) {
   const ProfileRecord record = profiler.finish();
-  for (const metrics::PassTimingRow& row : metrics::summarizeProfile(record))
+  for (const metrics::PassTiming& row : metrics::summarizeProfile(record).passes)
     state.counters[row.path + "_ms"] = row.reported.median;
   state.SetLabel(context.identity().renderer + ", " + record.reported_clock + " clock");
 }

@@ -1,0 +1,78 @@
+#include "suites/store_verification.h"
+
+#include "common/input_error.h"
+#include "common/splitmix.h"
+#include "metrics/z_test.h"
+#include "reference/progressive_renderer.h"
+#include "reference/reference_store_entry.h"
+#include "scene/builtin_scenes.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+
+namespace gib::suites {
+
+void checkVerifySettings(long long spp, double significance) {
+  if (spp < 2)
+    throw InputError(fmt::format(
+        "--spp {} gives the fresh render no variance; the Z-test needs at least 2", spp));
+  if (!(significance > 0 && significance < 1))
+    throw InputError(
+        fmt::format("--significance {} is not in (0, 1); 0.01 is usual", significance));
+}
+
+VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
+                              std::uint32_t spp, double significance, bool progress) {
+  checkVerifySettings(spp, significance);
+  const auto start = std::chrono::steady_clock::now();
+  VerifyResult result;
+  result.key = entry.key;
+  auto finish = [&] {
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  };
+
+  // Step 1: the scene must still be the one that was rendered, or nothing can be concluded.
+  const scene::Scene scene = scene::loadScene(entry.spec.scene, entry.spec.scene_parameters);
+  if (const std::string hash = scene::hashScene(scene); hash != entry.scene_hash) {
+    result.problem =
+        fmt::format("scene changed since the reference was stored (hash {} then, {} now)",
+                    entry.scene_hash.substr(0, 12), hash.substr(0, 12));
+    return finish();
+  }
+  const std::optional<ref::StoredReference> stored = store.find(entry.key);
+  if (!stored) {
+    result.problem = "the entry is no longer in the store";
+    return finish();
+  }
+  if (stored->variance.pixelCount() == 0) {
+    result.problem = "stored at 1 sample per pixel: no variance to test against";
+    return finish();
+  }
+
+  // Step 2: a fresh render with independent noise, Z-tested against the stored mean.
+  ref::ReferenceSpec fresh_spec = entry.spec;
+  fresh_spec.spp = spp;
+  // The fresh render's noise is independent of the stored one's, which the Z-test's combined
+  // variance assumes.
+  fresh_spec.seed = independentSeed(entry.spec.seed);
+  const ref::RenderResult fresh =
+      ref::renderReference(scene, ref::renderSettingsOf(fresh_spec, progress));
+  metrics::ZTestOptions options;
+  options.significance = significance;
+  const metrics::ZTestResult z =
+      metrics::zTest(stored->mean, stored->variance, fresh.mean, fresh.variance, options);
+  result.passed = z.passed;
+  result.tested = z.tested;
+  result.failing = z.failing;
+  result.min_p_value = z.min_p_value;
+  if (!z.passed)
+    result.problem =
+        fmt::format("Z-test: {} of {} values fail at family-wise significance {} (min p {:.2g})",
+                    z.failing, z.tested, significance, z.min_p_value);
+  return finish();
+}
+
+}  // namespace gib::suites

@@ -1,0 +1,34 @@
+// `gibench store verify`: a stored reference against a fresh render of the same spec, by the
+// per-pixel Z-test of the metrics layer. A harness operation on the store (it needs both the
+// renderer and the statistics), so it lives here rather than in the reference layer, which
+// neither measures nor judges its own images (docs/architecture.md, "Layers").
+#pragma once
+
+#include "reference/reference_store.h"
+
+#include <cstdint>
+#include <string>
+
+namespace gib::suites {
+
+struct VerifyResult {
+  std::string key;
+  bool passed = false;
+  std::string problem;  // why not: "scene changed (hash …)", "Z-test: 123 of 49152 values fail"
+  std::size_t tested = 0, failing = 0;
+  double min_p_value = 1;
+  double seconds = 0;
+};
+
+// Throws gib::InputError naming --spp or --significance when a verification with these settings
+// could conclude nothing: fewer than two samples (no variance), a significance outside (0, 1).
+void checkVerifySettings(long long spp, double significance);
+
+// Re-renders the entry's scene at `spp` samples with a seed of its own and Z-tests it against the
+// stored mean and variance at family-wise `significance` (metrics/z_test.h): a changed renderer
+// or scene fails. Throws gib::InputError for bad settings and when the scene cannot be loaded.
+VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
+                              std::uint32_t spp, double significance = 0.01,
+                              bool progress = false);
+
+}  // namespace gib::suites

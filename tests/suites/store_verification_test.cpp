@@ -1,0 +1,102 @@
+// `gibench store verify`'s check: an intact entry passes the Z-test against a fresh render, a
+// biased one or one whose scene changed fails, and settings that can conclude nothing are bad
+// input.
+#include "suites/store_verification.h"
+
+#include "common/input_error.h"
+#include "reference/reference_store_entry.h"
+#include "support/reference_store_fixtures.h"
+#include "support/temp_dir.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace gib::suites {
+namespace {
+
+using ref::ReferenceSpec;
+using ref::ReferenceStore;
+using ref::StoredReference;
+using test::obtainReference;
+using test::smallReferenceSpec;
+using test::TempDir;
+using ::testing::HasSubstr;
+
+// Verification runs at family-wise significance 0.01: an intact entry fails with probability
+// at most 1% (Šidák over the 24·24·3 values). Renders are deterministic, so each test's outcome
+// is fixed; the margin was checked over ten seeds (smallest p-value 3e-4 against the per-value
+// level 5.8e-6).
+constexpr double kSignificance = 0.01;
+constexpr std::uint32_t kVerifySpp = 64;
+
+TEST(StoreVerification, PassesOnAnUntouchedEntry) {
+  TempDir dir;
+  const StoredReference stored = obtainReference(dir.path(), smallReferenceSpec());
+  const VerifyResult r = verifyStoreEntry(ReferenceStore(dir.path()), stored.entry, kVerifySpp, kSignificance);
+  EXPECT_TRUE(r.passed) << r.problem;
+  EXPECT_EQ(r.key, stored.entry.key);
+  EXPECT_EQ(r.tested, 24u * 24u * 3u);
+  EXPECT_EQ(r.failing, 0u);
+  EXPECT_GT(r.seconds, 0);
+}
+
+TEST(StoreVerification, FailsWhenTheStoredMeanIsTwentyPercentHigh) {
+  // What a changed renderer looks like: the stored image 20% brighter than the current one.
+  TempDir dir;
+  const StoredReference stored =
+      obtainReference(dir.path(), smallReferenceSpec("cornell", 24, 256));
+  test::scaleStoredMean(stored.entry, 1.2f);
+  const VerifyResult r = verifyStoreEntry(ReferenceStore(dir.path()), stored.entry, 256, kSignificance);
+  EXPECT_FALSE(r.passed);
+  EXPECT_THAT(r.problem, HasSubstr("Z-test"));
+  // Far from the edge: the renders are deterministic and 213 of the 1728 values fail (a 20% bias
+  // is one to three standard errors at 256 spp; the per-value threshold is 4.5).
+  EXPECT_GT(r.failing, 50u);
+}
+
+TEST(StoreVerification, ReportsAChangedScene) {
+  TempDir dir;
+  test::writeFile(dir / "scene" / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  auto writeScene = [&](const char* diffuse) {
+    test::writeFile(dir / "scene" / "quad.toml", std::string(R"([camera]
+position = [0.5, 0.5, 2.0]
+look_at = [0.5, 0.5, 0.0]
+vertical_fov_deg = 45.0
+
+[materials.grey]
+type = "lambert"
+diffuse = )") + diffuse + R"(
+
+[[meshes]]
+file = "quad.obj"
+material = "grey"
+
+[sky]
+radiance = [1.0, 1.0, 1.0]
+)");
+  };
+  writeScene("[0.5, 0.5, 0.5]");
+  const ReferenceSpec spec = smallReferenceSpec((dir / "scene" / "quad.toml").string(), 16, 8);
+  const StoredReference stored = obtainReference(dir / "store", spec);
+  ReferenceStore store(dir / "store");
+  EXPECT_TRUE(verifyStoreEntry(store, stored.entry, 8, kSignificance).passed);
+
+  writeScene("[0.6, 0.5, 0.5]");
+  const VerifyResult r = verifyStoreEntry(store, stored.entry, 8, kSignificance);
+  EXPECT_FALSE(r.passed);
+  EXPECT_THAT(r.problem, HasSubstr("scene changed since the reference was stored"));
+}
+
+TEST(StoreVerification, RejectsTooFewSamplesAndABadSignificance) {
+  TempDir dir;
+  const StoredReference stored = obtainReference(dir.path(), smallReferenceSpec("cornell", 16, 4));
+  ReferenceStore store(dir.path());
+  EXPECT_THROW(verifyStoreEntry(store, stored.entry, 1, kSignificance), InputError);
+  EXPECT_THROW(verifyStoreEntry(store, stored.entry, 8, 0.0), InputError);
+  EXPECT_THROW(verifyStoreEntry(store, stored.entry, 8, 1.5), InputError);
+}
+
+}  // namespace
+}  // namespace gib::suites
