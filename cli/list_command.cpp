@@ -1,5 +1,6 @@
 #include "cli/commands.h"
 #include "common/input_error.h"
+#include "common/join.h"
 #include "metrics/metric_registry.h"
 #include "realtime/technique.h"
 #include "scene/builtin_scenes.h"
@@ -36,13 +37,73 @@ void listSuites() {
   }
 }
 
+// What the technique's README (realtime/techniques/<name>/README.md) shows between its
+// "generated" markers: the catalogue's own words, parameter table and declared passes.
+std::string techniqueMarkdown(const rt::TechniqueInfo& info) {
+  const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
+  std::string out = fmt::format(
+      "`{}`: {}.\n\nSource: {}. Path class with the defaults: {}.\n\n## Parameters "
+      "(`--set key=value`)\n\n{}\n## Passes\n\n| pass | what it times |\n|---|---|\n",
+      info.name, info.description, info.source,
+      scene::describePathClass(info.create(defaults)->pathClass()),
+      parameterMarkdownTable(info.parameters));
+  for (const rt::DeclaredPass& pass : info.passes.passes())
+    out += fmt::format("| `{}` | {} |\n", pass.path, pass.description);
+  return out;
+}
+
+void listTechniques() {
+  std::size_t width = std::string_view("reference").size();
+  for (const rt::TechniqueInfo& info : rt::techniqueCatalogue())
+    width = std::max(width, info.name.size());
+  fmt::print("{:<{}} {}\n", "reference", width,
+             "Embree path tracer (ground truth); options: --spp --seed --min-bounces "
+             "--max-bounces --checkpoints --threads");
+  for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) {
+    fmt::print("{:<{}} {}\n", info.name, width, info.description);
+    fmt::print("{:<{}}   source: {}\n", "", width, info.source);
+    // Constructing a technique does no GL work (that is prepare's), so the list needs no
+    // context to say which paths the defaults model.
+    const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
+    fmt::print("{:<{}}   path class (defaults): {}\n", "", width,
+               scene::describePathClass(info.create(defaults)->pathClass()));
+    for (const std::string& line : describeParameters(info.parameters))
+      fmt::print("{:<{}}   --set {}\n", "", width, line);
+    std::vector<std::string> passes;
+    for (const rt::DeclaredPass& pass : info.passes.passes()) passes.push_back(pass.path);
+    fmt::print("{:<{}}   passes: {}\n", "", width, joinNames(passes, ", "));
+  }
+}
+
 }  // namespace
 
 CommandRunner addListCommand(CLI::App& app) {
   CLI::App* list = app.add_subcommand("list", "List scenes, techniques, metrics or suites");
   auto what = std::make_shared<std::string>();
+  auto names = std::make_shared<std::vector<std::string>>();
+  auto markdown = std::make_shared<bool>(false);
   list->add_option("what", *what, "scenes | techniques | metrics | suites")->required();
-  return [what] {
+  list->add_option("names", *names, "techniques: only these (with --markdown)");
+  list->add_flag("--markdown", *markdown,
+                 "techniques: each one's documentation as Markdown (the generated part of "
+                 "realtime/techniques/<name>/README.md)");
+  return [what, names, markdown] {
+    if ((*markdown || !names->empty()) && *what != "techniques")
+      throw InputError(fmt::format(
+          "names and --markdown apply to `gibench list techniques`, not to '{}'", *what));
+    if (*what == "techniques" && *markdown) {
+      std::vector<const rt::TechniqueInfo*> chosen;
+      for (const std::string& name : *names) chosen.push_back(&rt::findTechnique(name));
+      if (names->empty())
+        for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) chosen.push_back(&info);
+      for (std::size_t i = 0; i < chosen.size(); ++i)
+        fmt::print("{}{}", i ? "\n" : "", techniqueMarkdown(*chosen[i]));
+      return 0;
+    }
+    if (!names->empty())
+      throw InputError(
+          "technique names go with --markdown: `gibench list techniques --markdown "
+          "direct`");
     if (*what == "scenes") {
       for (const scene::BuiltinSceneInfo& info : scene::builtinScenes()) {
         fmt::print("{:<10} {}\n", info.name, info.description);
@@ -53,23 +114,7 @@ CommandRunner addListCommand(CLI::App& app) {
       return 0;
     }
     if (*what == "techniques") {
-      std::size_t width = std::string_view("reference").size();
-      for (const rt::TechniqueInfo& info : rt::techniqueCatalogue())
-        width = std::max(width, info.name.size());
-      fmt::print("{:<{}} {}\n", "reference", width,
-                 "Embree path tracer (ground truth); options: --spp --seed --min-bounces "
-                 "--max-bounces --checkpoints --threads");
-      for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) {
-        fmt::print("{:<{}} {}\n", info.name, width, info.description);
-        fmt::print("{:<{}}   source: {}\n", "", width, info.source);
-        // Constructing a technique does no GL work (that is prepare's), so the list needs no
-        // context to say which paths the defaults model.
-        const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
-        fmt::print("{:<{}}   path class (defaults): {}\n", "", width,
-                   scene::describePathClass(info.create(defaults)->pathClass()));
-        for (const std::string& line : describeParameters(info.parameters))
-          fmt::print("{:<{}}   --set {}\n", "", width, line);
-      }
+      listTechniques();
       return 0;
     }
     if (*what == "metrics") {

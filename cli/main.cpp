@@ -1,4 +1,4 @@
-// gibench: the command line of GI Bench (DESIGN.md, "Command line contract").
+// gibench: the command line of GI Bench (docs/architecture.md, "Command line").
 // Exit codes: 0 success, 1 a regression found (diff), 2 bad input, 3 an internal failure.
 #include "cli/commands.h"
 #include "common/input_error.h"
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    // One line naming the problem and where to look, exit code 2 (DESIGN.md, "Errors").
+    // One line naming the problem and where to look, exit code 2 (docs/architecture.md, "Errors").
     fmt::print(stderr, "gibench: {}; see `gibench --help`\n", e.what());
     return 2;
   }

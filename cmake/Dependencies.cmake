@@ -1,5 +1,5 @@
 # Finds the Debian bookworm packages that scripts/install-deps.sh installs, and works around
-# their known packaging faults (see DESIGN.md, "Dependencies").
+# their known packaging faults (see docs/architecture.md, "Dependencies").
 
 find_package(PkgConfig REQUIRED)
 find_package(Threads REQUIRED)

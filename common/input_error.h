@@ -1,5 +1,6 @@
 // Bad input from a user: an unknown name, a malformed file, an impossible parameter, a missing
-// file. The command line turns it into one line on stderr and exit code 2 (DESIGN.md, "Errors").
+// file. The command line turns it into one line on stderr and exit code 2 (docs/architecture.md,
+// "Errors").
 #pragma once
 
 #include <stdexcept>

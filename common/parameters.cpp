@@ -183,6 +183,19 @@ ParameterValues parseParameters(const ParameterTable& table,
   return values;
 }
 
+std::string parameterMarkdownTable(const ParameterTable& table) {
+  std::string out = "| parameter | type | default | range | meaning |\n|---|---|---|---|---|\n";
+  for (const ParameterSpec& s : table) {
+    // fmt rather than "`" + …: GCC 12's -Wrestrict misfires on operator+(const char*, string&&).
+    const std::string range = s.type == ParameterType::kChoice
+                                  ? fmt::format("`{}`", joinNames(s.choices, "`, `"))
+                                  : rangeText(s);
+    out += fmt::format("| `{}` | {} | `{}` | {} | {} |\n", s.name, typeName(s.type),
+                       s.default_value, range, s.doc);
+  }
+  return out;
+}
+
 std::vector<std::string> describeParameters(const ParameterTable& table) {
   std::vector<std::string> lines;
   for (const ParameterSpec& s : table)

@@ -61,4 +61,8 @@ ParameterValues parseParameters(const ParameterTable& table,
 // One line per parameter for `gibench list`: "name (type, default D, range [a, b] unit): doc".
 std::vector<std::string> describeParameters(const ParameterTable& table);
 
+// The table as Markdown (parameter, type, default, range, meaning), for the documentation that
+// `gibench list techniques --markdown` generates, so that no parameter table is written twice.
+std::string parameterMarkdownTable(const ParameterTable& table);
+
 }  // namespace gib

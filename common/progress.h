@@ -1,5 +1,5 @@
-// A progress bar for long work, drawn on stderr only when stderr is a terminal (DESIGN.md: logs
-// and progress go to stderr; a pipe or CI log stays quiet).
+// A progress bar for long work, drawn on stderr only when stderr is a terminal
+// (docs/architecture.md: logs and progress go to stderr; a pipe or CI log stays quiet).
 #pragma once
 
 #include <chrono>

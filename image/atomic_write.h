@@ -1,5 +1,5 @@
 // Private to gib_image: writes a file so that readers see either the old file or the complete
-// new one, never a partial file (DESIGN.md, "Errors": no partial output is left behind).
+// new one, never a partial file (docs/architecture.md, "Errors": no partial output is left behind).
 #pragma once
 
 #include <filesystem>

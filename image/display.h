@@ -1,6 +1,6 @@
 // PNG pictures for people to look at (reports, quick checks): never for measuring, which uses
-// the scene-linear EXR (DESIGN.md, "Conventions", Images). The display transform comes from the
-// project's OpenColorIO config, color/config.ocio, compiled into the library.
+// the scene-linear EXR (docs/architecture.md, "Conventions", Images). The display transform comes
+// from the project's OpenColorIO config, color/config.ocio, compiled into the library.
 #pragma once
 
 #include <filesystem>

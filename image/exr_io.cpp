@@ -82,7 +82,7 @@ OIIO::ImageSpec makeSpec(const std::vector<Layer>& layers, const Metadata& metad
   spec.attribute("compression", "zip");
   // OpenImageIO stamps the current time into capDate unless DateTime is set. An empty capDate
   // (which readers, OpenImageIO included, skip) keeps the file free of time: equal inputs give
-  // byte-identical files (DESIGN.md, "Randomness").
+  // byte-identical files (docs/architecture.md, "Randomness").
   spec.attribute("DateTime", "");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
   return spec;
@@ -105,7 +105,7 @@ void interleaveRows(const std::vector<Layer>& layers, int total_channels, int y0
   }
 }
 
-// OpenImageIO's messages may span lines; ours are one line (DESIGN.md, "Errors").
+// OpenImageIO's messages may span lines; ours are one line (docs/architecture.md, "Errors").
 std::string oneLine(std::string message) {
   while (!message.empty() && message.back() == '\n') message.pop_back();
   std::replace(message.begin(), message.end(), '\n', ' ');

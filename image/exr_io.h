@@ -1,5 +1,5 @@
 // OpenEXR files of float32 images with named layers and string metadata: the format of every
-// measured image (DESIGN.md, "Conventions", Images).
+// measured image (docs/architecture.md, "Conventions", Images).
 #pragma once
 
 #include <filesystem>

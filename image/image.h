@@ -1,4 +1,4 @@
-// A float image: the in-memory form of every render, reference and error map (DESIGN.md,
+// A float image: the in-memory form of every render, reference and error map (docs/architecture.md,
 // "Conventions", Images). Row-major, pixel (0,0) top-left, channels interleaved; three channels
 // hold scene-linear Rec.709 RGB radiance unless a layer says otherwise.
 #pragma once

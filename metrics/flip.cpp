@@ -148,7 +148,9 @@ FlipExposureRange computeFlipExposureRange(const image::Image& reference) {
   for (int y = 0; y < reference.height(); ++y)
     for (int x = 0; x < reference.width(); ++x) {
       const float* p = reference.pixel(x, y);
-      const double l = isFinitePixel(p) ? kLuminanceRed * p[0] + kLuminanceGreen * p[1] + kLuminanceBlue * p[2] : 0.0;
+      const double l = isFinitePixel(p)
+                           ? kLuminanceRed * p[0] + kLuminanceGreen * p[1] + kLuminanceBlue * p[2]
+                           : 0.0;
       luminance.push_back(l);
       if (l > 0) smallest_positive = std::min(smallest_positive, l);
     }

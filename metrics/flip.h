@@ -5,8 +5,8 @@
 // published implementation, within 1e-3 on the mean (docs/flip-validation.md says how that was
 // checked and with which numbers).
 //
-// Inputs are linear Rec.709 RGB (DESIGN.md, "Radiometry"); only the first three channels are
-// read, so RGBA images work too. A pixel with a NaN or infinite channel is evaluated as black
+// Inputs are linear Rec.709 RGB (docs/architecture.md, "Radiometry"); only the first three channels
+// are read, so RGBA images work too. A pixel with a NaN or infinite channel is evaluated as black
 // (0, 0, 0): callers count such pixels with image::countNonFinite and report them apart, and
 // FLIP stays finite instead of spreading the NaN through its filters.
 #pragma once

@@ -131,9 +131,9 @@ std::string formatPassTable(const PassTimings& timings) {
   for (const PassTiming& pass : timings.passes)
     name_width = std::max(name_width, 2 * std::size_t(pass.depth) + pass.name.size());
 
-  std::string out = fmt::format(
-      "Per-pass times in ms per frame, {}; {} warm-up and {} measured frames\n",
-      timings.clockDescription(), timings.warmup_frames, timings.measured_frames);
+  std::string out =
+      fmt::format("Per-pass times in ms per frame, {}; {} warm-up and {} measured frames\n",
+                  timings.clockDescription(), timings.warmup_frames, timings.measured_frames);
   out += fmt::format("{:<{}}  {:>9} {:>9} {:>9} {:>9} {:>9} {:>7} {:>6}", "pass", name_width,
                      "median", "q1", "q3", "min", "max", "share", "calls");
   if (both) out += fmt::format(" {:>11}", other + " median");

@@ -41,8 +41,8 @@ PassDeclarations& PassDeclarations::add(std::string path, std::string descriptio
   const std::string_view parent = parentOf(path);
   const bool root = parent.empty();
   if (root && path != kFramePass && path != kIterationPass)
-    throw std::logic_error(fmt::format("pass '{}' is not under '{}' or '{}'", path, kFramePass,
-                                       kIterationPass));
+    throw std::logic_error(
+        fmt::format("pass '{}' is not under '{}' or '{}'", path, kFramePass, kIterationPass));
   if (!root && !declares(parent))
     throw std::logic_error(
         fmt::format("pass '{}' is declared before its parent '{}'", path, parent));

@@ -1,5 +1,5 @@
-// The reflection models of DESIGN.md ("Materials"), evaluated and sampled in world space.
-// Reflection is two-sided: `n` is the surface normal already turned towards ωo.
+// The reflection models of docs/architecture.md ("Materials"), evaluated and sampled in world
+// space. Reflection is two-sided: `n` is the surface normal already turned towards ωo.
 #pragma once
 
 #include "scene/scene.h"

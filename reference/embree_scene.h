@@ -1,5 +1,5 @@
 // The scene's triangles in an Embree 3 BVH, and the two queries the tracer needs. Embree is
-// included only in reference/*.cpp (DESIGN.md); this header hides it.
+// included only in reference/*.cpp (docs/architecture.md, "Layers"); this header hides it.
 #pragma once
 
 #include "scene/scene.h"

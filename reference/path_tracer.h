@@ -2,7 +2,7 @@
 // type, combined with BSDF (or phase-function) sampling by multiple importance sampling (power
 // heuristic), unbiased Russian roulette, and a heterogeneous medium integrated by delta tracking
 // (free paths) and ratio tracking (shadow rays). It can restrict itself to a path class
-// (DESIGN.md, "Path classes").
+// (docs/architecture.md, "Path classes").
 #pragma once
 
 #include "reference/area_light_sampler.h"

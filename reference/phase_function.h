@@ -1,5 +1,5 @@
-// The Henyey–Greenstein phase function of the medium (DESIGN.md, "Media"), as a density over
-// the sphere of outgoing propagation directions.
+// The Henyey–Greenstein phase function of the medium (docs/architecture.md, "Media"), as a density
+// over the sphere of outgoing propagation directions.
 #pragma once
 
 #include <glm/vec2.hpp>

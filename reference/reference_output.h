@@ -11,8 +11,8 @@
 
 namespace gib::ref {
 
-// Metadata of DESIGN.md ("Images"): program version, scene and its hash, technique, parameters,
-// samples, seed, bounce limits, Embree version.
+// Metadata of docs/architecture.md ("Images"): program version, scene and its hash, technique,
+// parameters, samples, seed, bounce limits, Embree version.
 image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSettings& settings);
 
 // The keys that describe how a run went rather than what it computed: the only ones that differ

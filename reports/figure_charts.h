@@ -2,8 +2,8 @@
 // chart's quantities looked up per job (reports/quantity.h), grouped into series, as SVG.
 #pragma once
 
-#include "results/results.h"
 #include "reports/svg_charts.h"
+#include "results/results.h"
 
 #include <string>
 

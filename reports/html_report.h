@@ -23,6 +23,7 @@ struct ReportContext {
 // Writes <run_dir>/index.html and <run_dir>/report/*.html for `results`, whose output paths are
 // relative to run_dir. Atomic per file. Returns the path of index.html.
 std::filesystem::path writeHtmlReport(const std::filesystem::path& run_dir,
-                                      const results::RunResults& results, const ReportContext& context);
+                                      const results::RunResults& results,
+                                      const ReportContext& context);
 
 }  // namespace gib::reports

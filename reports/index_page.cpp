@@ -70,7 +70,8 @@ std::string toleranceText(const results::Tolerance& t) {
   return fmt::format("±max({}, {}·|previous|)", formatNumber(t.absolute), formatNumber(t.relative));
 }
 
-std::string regressionsSection(const results::RunResults& results, const RunComparison& comparison) {
+std::string regressionsSection(const results::RunResults& results,
+                               const RunComparison& comparison) {
   if (!comparison.hasPrevious()) return {};
   const results::DiffReport& diff = *comparison.diff();
   HtmlTable table({{"job"},
@@ -101,10 +102,12 @@ std::string regressionsSection(const results::RunResults& results, const RunComp
 
 // Scenes in suite order; techniques with the reference first, then in suite order.
 std::vector<std::string> orderedUnique(const std::vector<results::JobResult>& jobs,
-                                       std::string results::JobResult::*field, const std::string& first) {
+                                       std::string results::JobResult::*field,
+                                       const std::string& first) {
   std::vector<std::string> names;
-  if (!first.empty() && std::any_of(jobs.begin(), jobs.end(),
-                                    [&](const results::JobResult& job) { return job.*field == first; }))
+  if (!first.empty() && std::any_of(jobs.begin(), jobs.end(), [&](const results::JobResult& job) {
+        return job.*field == first;
+      }))
     names.push_back(first);
   for (const results::JobResult& job : jobs)
     if (std::find(names.begin(), names.end(), job.*field) == names.end())
@@ -112,8 +115,8 @@ std::vector<std::string> orderedUnique(const std::vector<results::JobResult>& jo
   return names;
 }
 
-std::string matrixEntry(const results::RunResults& results, const results::JobResult& job, bool name_case,
-                        const RunComparison& comparison) {
+std::string matrixEntry(const results::RunResults& results, const results::JobResult& job,
+                        bool name_case, const RunComparison& comparison) {
   const std::optional<JobComparison> compared = comparison.job(job.id);
   std::string label = sweepLabel(job);
   if (name_case || label.empty())
@@ -123,7 +126,8 @@ std::string matrixEntry(const results::RunResults& results, const results::JobRe
                   verdictClass(compared ? std::optional(compared->overall) : std::nullopt),
                   escapeHtml(urlPath(jobPageFile(job))), escapeHtml(label));
   if (const std::optional<double> value = job.metric(results.primary_metric)) {
-    const results::MetricChange* change = compared ? compared->findMetric(results.primary_metric) : nullptr;
+    const results::MetricChange* change =
+        compared ? compared->findMetric(results.primary_metric) : nullptr;
     html += fmt::format("<div>{} {}</div>", escapeHtml(results.primary_metric),
                         verdictSpan(formatNumber(*value), change));
   }
@@ -135,7 +139,8 @@ std::string matrixEntry(const results::RunResults& results, const results::JobRe
 }
 
 std::string matrixSection(const results::RunResults& results, const RunComparison& comparison) {
-  const std::vector<std::string> scenes = orderedUnique(results.jobs, &results::JobResult::scene, "");
+  const std::vector<std::string> scenes =
+      orderedUnique(results.jobs, &results::JobResult::scene, "");
   const std::vector<std::string> techniques =
       orderedUnique(results.jobs, &results::JobResult::technique, "reference");
   std::vector<TableColumn> columns = {{"scene"}};

@@ -2,8 +2,8 @@
 // and regressions), and the scene × technique matrix linking to the job pages.
 #pragma once
 
-#include "results/results.h"
 #include "reports/run_comparison.h"
+#include "results/results.h"
 
 #include <string>
 

@@ -94,8 +94,8 @@ double valueOf(const results::NamedValues& values, const std::string& name) {
 // One run's value of a job, for a trend; NaN when the run lacks the job or the value.
 using JobValue = std::function<std::optional<double>(const results::JobResult&)>;
 
-std::vector<TrendPoint> trendOf(const std::vector<const results::RunResults*>& runs, const std::string& id,
-                                const JobValue& value) {
+std::vector<TrendPoint> trendOf(const std::vector<const results::RunResults*>& runs,
+                                const std::string& id, const JobValue& value) {
   std::vector<TrendPoint> points;
   for (const results::RunResults* run : runs) {
     const results::JobResult* job = run->findJob(id);
@@ -113,23 +113,24 @@ bool anyFinite(const std::vector<TrendPoint>& points) {
 
 }  // namespace
 
-std::string timingsSection(const results::JobResult& job, const std::optional<JobComparison>& compared) {
+std::string timingsSection(const results::JobResult& job,
+                           const std::optional<JobComparison>& compared) {
   const std::string phases = phasesTable(job);
   if (!job.timings)
     return phases.empty() ? std::string() : htmlSection("timings", "Timings", phases);
   return htmlSection("timings", "Timings",
                      timingsIntro(*job.timings, compared) + "<div class=\"charts\">\n" +
-                         passTable(*job.timings, "frame") + passTimingChart(passBars(*job.timings)) +
-                         "\n</div>\n" + phases);
+                         passTable(*job.timings, "frame") +
+                         passTimingChart(passBars(*job.timings)) + "\n</div>\n" + phases);
 }
 
 std::string iterationTimingsSection(const results::JobResult& job) {
   if (!job.iteration_timings) return {};
   const metrics::PassTimings& timings = *job.iteration_timings;
-  const std::string intro = fmt::format(
-      "<p>{}; {} iterations, each timed as one unit. Median iteration {} ms.</p>\n",
-      escapeHtml(timings.clockDescription()), timings.measured_frames,
-      escapeHtml(formatNumber(timings.root().reported.median)));
+  const std::string intro =
+      fmt::format("<p>{}; {} iterations, each timed as one unit. Median iteration {} ms.</p>\n",
+                  escapeHtml(timings.clockDescription()), timings.measured_frames,
+                  escapeHtml(formatNumber(timings.root().reported.median)));
   return htmlSection("iteration-timings", "Time per iteration",
                      intro + "<div class=\"charts\">\n" + passTable(timings, "iteration") +
                          passTimingChart(passBars(timings), "iteration") + "\n</div>\n");

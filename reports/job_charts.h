@@ -4,14 +4,15 @@
 #pragma once
 
 #include "reports/html_report.h"
-#include "results/results.h"
 #include "reports/run_comparison.h"
+#include "results/results.h"
 
 #include <string>
 
 namespace gib::reports {
 
-std::string timingsSection(const results::JobResult& job, const std::optional<JobComparison>& compared);
+std::string timingsSection(const results::JobResult& job,
+                           const std::optional<JobComparison>& compared);
 // The per-pass time of each iteration of an iterative technique; empty when it has none.
 std::string iterationTimingsSection(const results::JobResult& job);
 

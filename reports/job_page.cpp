@@ -54,7 +54,8 @@ std::string jobFacts(const results::JobResult& job) {
   });
 }
 
-std::string metricsSection(const results::JobResult& job, const std::optional<JobComparison>& compared) {
+std::string metricsSection(const results::JobResult& job,
+                           const std::optional<JobComparison>& compared) {
   if (job.metrics.empty() && job.metrics_full.empty()) return {};
   const bool full = job.full_reference.has_value() || !job.metrics_full.empty();
   std::vector<std::string> names;

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "reports/html_report.h"
-#include "results/results.h"
 #include "reports/run_comparison.h"
+#include "results/results.h"
 
 #include <filesystem>
 #include <string>

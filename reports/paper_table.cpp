@@ -2,9 +2,9 @@
 
 #include "reports/html_text.h"
 #include "reports/number_format.h"
-#include "results/quantity.h"
 #include "reports/report_labels.h"
 #include "reports/report_page.h"
+#include "results/quantity.h"
 
 #include <fmt/format.h>
 
@@ -27,18 +27,20 @@ std::string paperTable(const results::RunResults& results, const std::string* jo
     if (job_id && paper.job != *job_id) continue;
     const results::JobResult* job = results.findJob(paper.job);
     const std::string unit = paper.unit.empty() ? "" : " " + paper.unit;
-    const std::optional<double> ours =
-        job ? results::quantityValue(*job, paper.quantity) : std::optional<double>();
+    std::string ours_text = "not measured", ratio;
+    if (job)
+      if (const std::optional<double> ours = results::quantityValue(*job, paper.quantity)) {
+        ours_text = escapeHtml(formatNumber(*ours) + unit);
+        if (paper.value != 0) ratio = formatNumber(*ours / paper.value, 3);
+      }
     std::vector<std::string> row;
     if (!job_id)
       row.push_back(job ? fmt::format("<a href=\"{}\">{}</a>",
                                       escapeHtml(urlPath(jobPageFile(*job))), escapeHtml(paper.job))
                         : escapeHtml(paper.job));
     for (std::string cell :
-         {escapeHtml(paper.quantity), escapeHtml(formatNumber(paper.value) + unit),
-          ours ? escapeHtml(formatNumber(*ours) + unit) : std::string("not measured"),
-          ours && paper.value != 0 ? formatNumber(*ours / paper.value, 3) : std::string(),
-          escapeHtml(paper.source), escapeHtml(paper.note)})
+         {escapeHtml(paper.quantity), escapeHtml(formatNumber(paper.value) + unit), ours_text,
+          ratio, escapeHtml(paper.source), escapeHtml(paper.note)})
       row.push_back(std::move(cell));
     table.addRow(row);
   }

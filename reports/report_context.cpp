@@ -2,8 +2,8 @@
 
 namespace gib::reports {
 
-ReportContext loadReportContext(const results::HistoryDatabase& db, const results::RunResults& results,
-                                std::size_t trend_runs) {
+ReportContext loadReportContext(const results::HistoryDatabase& db,
+                                const results::RunResults& results, std::size_t trend_runs) {
   ReportContext context;
   context.previous = db.previousRun(results.run.suite, results.run.started);
   context.history = db.recentRuns(results.run.suite, results.run.started, trend_runs);

@@ -3,8 +3,8 @@
 // writes a report at the end of `gibench run`.
 #pragma once
 
-#include "results/history_db.h"
 #include "reports/html_report.h"
+#include "results/history_db.h"
 
 #include <cstddef>
 
@@ -13,7 +13,7 @@ namespace gib::reports {
 // The newest run of the suite started before `results`, and the last `trend_runs` runs up to it
 // (oldest first). When the database does not hold `results` itself, the report appends it to
 // the trends, so one run fewer is read to keep the trend at `trend_runs` runs.
-ReportContext loadReportContext(const results::HistoryDatabase& db, const results::RunResults& results,
-                                std::size_t trend_runs);
+ReportContext loadReportContext(const results::HistoryDatabase& db,
+                                const results::RunResults& results, std::size_t trend_runs);
 
 }  // namespace gib::reports

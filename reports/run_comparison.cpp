@@ -27,7 +27,8 @@ std::string spanOf(const std::string& text, std::optional<results::Verdict> verd
 
 }  // namespace
 
-RunComparison::RunComparison(const results::RunResults& results, const std::optional<results::RunResults>& previous) {
+RunComparison::RunComparison(const results::RunResults& results,
+                             const std::optional<results::RunResults>& previous) {
   if (!previous) return;
   previous_run_ = previous->run;
   diff_ = results::diffResults(*previous, results);
@@ -42,7 +43,8 @@ RunComparison::RunComparison(const results::RunResults& results, const std::opti
     job.timing = change;
   }
   for (const results::JobPresence& presence : diff_->presence)
-    if (presence.verdict == results::Verdict::kAdded) jobs_[presence.job].overall = results::Verdict::kAdded;
+    if (presence.verdict == results::Verdict::kAdded)
+      jobs_[presence.job].overall = results::Verdict::kAdded;
 }
 
 std::optional<JobComparison> RunComparison::job(const std::string& id) const {
@@ -52,7 +54,8 @@ std::optional<JobComparison> RunComparison::job(const std::string& id) const {
 }
 
 const char* verdictClass(std::optional<results::Verdict> verdict) {
-  if (verdict == results::Verdict::kRegressed || verdict == results::Verdict::kMissing) return "verdict-regressed";
+  if (verdict == results::Verdict::kRegressed || verdict == results::Verdict::kMissing)
+    return "verdict-regressed";
   if (verdict == results::Verdict::kImproved) return "verdict-improved";
   return "verdict-unchanged";
 }
@@ -62,7 +65,8 @@ std::string verdictSpan(const std::string& text, const results::MetricChange* ch
                 : spanOf(text, std::nullopt, std::nullopt);
 }
 
-std::string verdictSpan(const std::string& text, const std::optional<results::TimingChange>& change) {
+std::string verdictSpan(const std::string& text,
+                        const std::optional<results::TimingChange>& change) {
   return change ? spanOf(text, change->verdict, change->relative_change)
                 : spanOf(text, std::nullopt, std::nullopt);
 }

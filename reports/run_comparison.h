@@ -16,7 +16,8 @@ struct JobComparison {
   // kRegressed when any value of the job regressed, else kImproved when any improved, else
   // kUnchanged; kAdded when the previous run did not have the job.
   results::Verdict overall = results::Verdict::kUnchanged;
-  std::map<std::string, results::MetricChange> metrics;  // by results::MetricChange::metric ("relmse", "full:…")
+  std::map<std::string, results::MetricChange>
+      metrics;  // by results::MetricChange::metric ("relmse", "full:…")
   std::optional<results::TimingChange> timing;
 
   const results::MetricChange* findMetric(const std::string& name) const {
@@ -28,7 +29,8 @@ struct JobComparison {
 class RunComparison {
  public:
   // No previous run: nothing is compared and every lookup answers "no comparison".
-  RunComparison(const results::RunResults& results, const std::optional<results::RunResults>& previous);
+  RunComparison(const results::RunResults& results,
+                const std::optional<results::RunResults>& previous);
 
   bool hasPrevious() const { return diff_.has_value(); }
   const std::optional<results::RunInfo>& previousRun() const { return previous_run_; }
@@ -51,6 +53,7 @@ const char* verdictClass(std::optional<results::Verdict> verdict);
 // in small print when it is not zero: `<span class="verdict-regressed">0.013</span>
 // <small>(+12.5%)</small>`. No change (null, nullopt): a neutral span.
 std::string verdictSpan(const std::string& text, const results::MetricChange* change);
-std::string verdictSpan(const std::string& text, const std::optional<results::TimingChange>& change);
+std::string verdictSpan(const std::string& text,
+                        const std::optional<results::TimingChange>& change);
 
 }  // namespace gib::reports

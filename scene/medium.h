@@ -1,7 +1,7 @@
-// Participating media (DESIGN.md, "Media"): a cloud of spherical particles, each with a centre,
-// a radius and a density τ that falls off linearly, σt(p) = τ·(1 − d/r) for d < r. Overlapping
-// particles add. The density field is defined here once and used by the reference path tracer
-// and by the real-time techniques alike.
+// Participating media (docs/architecture.md, "Media"): a cloud of spherical particles, each with a
+// centre, a radius and a density τ that falls off linearly, σt(p) = τ·(1 − d/r) for d < r.
+// Overlapping particles add. The density field is defined here once and used by the reference path
+// tracer and by the real-time techniques alike.
 #pragma once
 
 #include "scene/scene.h"

@@ -1,6 +1,6 @@
-// The gibench/* metadata every output shares, whoever rendered it (DESIGN.md, "Images"): the
-// program and its version, the technique and its parameters, the scene with its hash, provenance
-// and parameters, the image size and the path class. Renderers add their own keys to it.
+// The gibench/* metadata every output shares, whoever rendered it (docs/architecture.md, "Images"):
+// the program and its version, the technique and its parameters, the scene with its hash,
+// provenance and parameters, the image size and the path class. Renderers add their own keys to it.
 #pragma once
 
 #include "scene/path_class.h"

@@ -1,6 +1,6 @@
 // The scene model shared by the reference path tracer and every real-time technique
-// (DESIGN.md, "Conventions"). Units: lengths in scene units (the Cornell box uses mm), radiance
-// in linear Rec.709 RGB (W/(sr·m²) per channel, scene-linear), spot intensity in W/sr,
+// (docs/architecture.md, "Conventions"). Units: lengths in scene units (the Cornell box uses mm),
+// radiance in linear Rec.709 RGB (W/(sr·m²) per channel, scene-linear), spot intensity in W/sr,
 // directional irradiance in W/m² on a plane perpendicular to the light.
 #pragma once
 

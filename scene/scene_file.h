@@ -1,5 +1,5 @@
 // Scene files: a TOML file that places OBJ meshes and defines materials, lights, the camera and the
-// sky of a scene (DESIGN.md, "Scenes": users bring their own scenes).
+// sky of a scene (docs/architecture.md, "Scenes": users bring their own scenes).
 //
 // Format (units as in scene.h: radiance in linear Rec.709 RGB, spot intensity in W/sr,
 // directional irradiance in W/m², angles in degrees, lengths in scene units):

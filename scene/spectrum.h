@@ -1,6 +1,6 @@
 // Spectral data to linear Rec.709 RGB, the colour space of every radiance in GI Bench
-// (DESIGN.md, "Radiometry"). Used to turn the Cornell box's measured spectra into the RGB
-// reflectances and emission of the built-in `cornell` scene.
+// (docs/architecture.md, "Radiometry"). Used to turn the Cornell box's measured spectra into the
+// RGB reflectances and emission of the built-in `cornell` scene.
 #pragma once
 
 #include "scene/scene.h"

@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   # Toolchain
-  build-essential cmake ninja-build pkg-config git clang-format
+  build-essential cmake ninja-build pkg-config git clang-format python3
   # Reference renderer
   libembree-dev libtbb-dev
   # Images and colour

@@ -12,10 +12,10 @@
 #include "metrics/metric_registry.h"
 #include "metrics/pass_timing_summary.h"
 #include "realtime/technique_output.h"
-#include "results/results_json.h"
 #include "realtime/technique_runner.h"
 #include "reference/progressive_renderer.h"
 #include "reference/reference_output.h"
+#include "results/results_json.h"
 #include "scene/builtin_scenes.h"
 
 #include <fmt/format.h>

@@ -28,7 +28,6 @@ void checkVerifySettings(long long spp, double significance);
 // stored mean and variance at family-wise `significance` (metrics/z_test.h): a changed renderer
 // or scene fails. Throws gib::InputError for bad settings and when the scene cannot be loaded.
 VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
-                              std::uint32_t spp, double significance = 0.01,
-                              bool progress = false);
+                              std::uint32_t spp, double significance = 0.01, bool progress = false);
 
 }  // namespace gib::suites

@@ -40,8 +40,8 @@ void checkPassesDeclared(const TomlTableReader& t, const toml::node& node, std::
       if (info.passes.declares(pass)) continue;
       t.errors().fail(
           node,
-          fmt::format("{} '{}' names the pass '{}', which technique '{}' does not declare", t.path(key),
-                      quantity, pass, technique),
+          fmt::format("{} '{}' names the pass '{}', which technique '{}' does not declare",
+                      t.path(key), quantity, pass, technique),
           fmt::format("name one of its passes: {} (`gibench list techniques`)",
                       joinNames(info.passes.passes(), ", ",
                                 [](const rt::DeclaredPass& p) { return p.path; })));
@@ -188,8 +188,7 @@ std::vector<results::ChartSpec> readCharts(const TomlTableReader& root,
       const toml::node& node = t.require(key, example);
       std::string value = t.string(node, key);
       if (const std::optional<std::string> error = results::quantitySyntaxError(value))
-        t.errors().fail(node, fmt::format("{} '{}' {}", t.path(key), value, *error),
-                        kQuantityFix);
+        t.errors().fail(node, fmt::format("{} '{}' {}", t.path(key), value, *error), kQuantityFix);
       checkPassesDeclared(t, node, key, value, techniques,
                           fmt::format("the jobs '{}' have", c.jobs));
       return value;

@@ -15,9 +15,9 @@ const int kGBufferNormalUnit = 1;    // gbuffer/: geometric normal, w material
 const int kShadowMapUnit = 2;        // lighting/: the current light sample's shadow map
 const int kTechniqueFirstUnit = 4;   // 4..7: a technique's own textures
 const int kTechniqueUnitCount = 4;
-const int kAtlasPositionUnit = 8;  // atlas/: xyz sample point, w 1 inside a chart
-const int kAtlasNormalUnit = 9;    // atlas/: xyz unit normal, w world area of the texel
-const int kAtlasAlbedoUnit = 10;   // atlas/: rgb diffuse reflectance
+const int kAtlasPositionUnit = 8;   // atlas/: xyz sample point, w 1 inside a chart
+const int kAtlasNormalUnit = 9;     // atlas/: xyz unit normal, w world area of the texel
+const int kAtlasAlbedoUnit = 10;    // atlas/: rgb diffuse reflectance
 const int kAtlasEmissionUnit = 11;  // atlas/: rgb emitted radiance, front side
 
 // Image units of compute passes (one program at a time reads one image and writes another).
@@ -25,8 +25,8 @@ const int kImageSourceUnit = 0;
 const int kImageDestinationUnit = 1;
 
 // Shader storage buffer bindings.
-const int kMaterialsBinding = 0;                // gpu_scene/: the scene's materials
-const int kTechniqueFirstStorageBinding = 1;    // 1..5: a technique's own buffers
+const int kMaterialsBinding = 0;              // gpu_scene/: the scene's materials
+const int kTechniqueFirstStorageBinding = 1;  // 1..5: a technique's own buffers
 const int kTechniqueStorageBindingCount = 5;
 const int kTestFirstStorageBinding = 6;  // 6, 7: tests' query and result buffers
 

@@ -188,9 +188,8 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
       std::string log(std::size_t(std::max(length, 1)), '\0');
       glGetShaderInfoLog(shader, length, nullptr, log.data());
       cleanup();
-      throw ShaderError(fmt::format("{} shader {} does not compile:\n{}",
-                                    stageName(stage.type), stage.path,
-                                    translateInfoLog(log, source)));
+      throw ShaderError(fmt::format("{} shader {} does not compile:\n{}", stageName(stage.type),
+                                    stage.path, translateInfoLog(log, source)));
     }
     glAttachShader(program.id(), shader);
   }

@@ -40,8 +40,8 @@ std::span<const EmbeddedFile> embeddedShaderFiles();
 // The text of an embedded file; throws ShaderError if there is none of that path.
 std::string_view glslFile(std::string_view path);
 
-// Where sources come from: a path relative to the project root → its text (throwing ShaderError when
-// there is none). glslFile by default; tests pass in-memory sources, since a .glsl file under
+// Where sources come from: a path relative to the project root → its text (throwing ShaderError
+// when there is none). glslFile by default; tests pass in-memory sources, since a .glsl file under
 // realtime/ would be embedded in the product.
 using GlslLookup = std::function<std::string_view(std::string_view)>;
 

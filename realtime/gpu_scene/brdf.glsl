@@ -1,4 +1,4 @@
-// The materials of DESIGN.md, evaluated exactly as the reference does (reference/bsdf.cpp):
+// The materials of docs/architecture.md, evaluated exactly as the reference does (reference/bsdf.cpp):
 // Lambert f = ρd/π; normalised modified Phong adds ρs·(n+2)/(2π)·cosⁿα, α between the mirror
 // direction of ωo and ωi. `n` faces the side of ωo.
 const float kInvPi = 0.31830988618379067;

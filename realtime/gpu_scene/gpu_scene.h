@@ -29,8 +29,8 @@ void setSceneVertexAttributes(const gl::VertexArray& vertex_array, const gl::Buf
                             offsetof(Vertex, normal));
   glVertexArrayAttribIFormat(vao, gpu::kVertexMaterialLocation, 1, GL_UNSIGNED_INT,
                              offsetof(Vertex, material));
-  for (GLuint attribute : {gpu::kVertexPositionLocation, gpu::kVertexNormalLocation,
-                           gpu::kVertexMaterialLocation}) {
+  for (GLuint attribute :
+       {gpu::kVertexPositionLocation, gpu::kVertexNormalLocation, gpu::kVertexMaterialLocation}) {
     glVertexArrayAttribBinding(vao, attribute, 0);
     glEnableVertexArrayAttrib(vao, attribute);
   }

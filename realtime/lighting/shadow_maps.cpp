@@ -171,7 +171,8 @@ void ShadowMaps::blur(LightSampleKind kind, gl::PassProfiler& profiler) {
   program.use();
   glUniform1i(program.uniform("u_radius"), settings_.blur_radius);
   glUniform1i(program.uniform("u_size"), settings_.size);
-  const GLuint groups = GLuint((settings_.size + gpu::kVsmBlurGroupSize - 1) / gpu::kVsmBlurGroupSize);
+  const GLuint groups =
+      GLuint((settings_.size + gpu::kVsmBlurGroupSize - 1) / gpu::kVsmBlurGroupSize);
   const GLboolean layered = cube ? GL_TRUE : GL_FALSE;
   // Horizontal into the scratch map, then vertical back.
   const gl::Texture* source[2] = {&moments, &scratch};

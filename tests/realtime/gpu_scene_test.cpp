@@ -119,8 +119,9 @@ TEST_F(GlTest, ASceneWithoutMeshesUploadsAndDrawsNothing) {
 // scene.glsl takes its bindings from gpu_scene_shared.h: the program the driver built must report
 // the C++ values, so the shared header reaches GLSL intact.
 TEST_F(GlTest, SceneGlslBindingsAreTheCppOnes) {
-  const gl::Program program = gl::buildProgram({{GL_VERTEX_SHADER, "realtime/gbuffer/gbuffer.vert.glsl"},
-                                                {GL_FRAGMENT_SHADER, "realtime/gbuffer/gbuffer.frag.glsl"}});
+  const gl::Program program =
+      gl::buildProgram({{GL_VERTEX_SHADER, "realtime/gbuffer/gbuffer.vert.glsl"},
+                        {GL_FRAGMENT_SHADER, "realtime/gbuffer/gbuffer.frag.glsl"}});
   auto binding = [&](GLenum interface, const char* block) {
     const GLuint index = glGetProgramResourceIndex(program.id(), interface, block);
     EXPECT_NE(index, GL_INVALID_INDEX) << block;

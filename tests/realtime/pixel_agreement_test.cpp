@@ -1,7 +1,7 @@
-// The acceptance test of the GL camera and G-buffer (DESIGN.md, "Camera": the GL renderers and
-// the path tracer produce the same pixel for the same ray): albedo, normal and distance rendered
-// with GL agree with Embree's primary rays through the pixel centres everywhere but at
-// silhouettes, where the rasteriser's and the ray tracer's edge rules may pick different
+// The acceptance test of the GL camera and G-buffer (docs/architecture.md, "Camera": the GL
+// renderers and the path tracer produce the same pixel for the same ray): albedo, normal and
+// distance rendered with GL agree with Embree's primary rays through the pixel centres everywhere
+// but at silhouettes, where the rasteriser's and the ray tracer's edge rules may pick different
 // triangles. A control shifts the rays by half a pixel to show that the comparison can fail.
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gpu_scene/gpu_scene.h"

@@ -67,8 +67,7 @@ std::vector<int> evaluateOnGpu(const std::vector<std::string>& expressions) {
   program.use();
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(results.size() * sizeof(int)),
-                          results.data());
+  glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(results.size() * sizeof(int)), results.data());
   return results;
 }
 
@@ -134,9 +133,9 @@ TEST_F(SharedHeaders, SharedStructsHaveTheCppLayoutInTheDriver) {
             sizeof(gpu::Shooter));
   EXPECT_EQ(property(GL_BUFFER_VARIABLE, "materials[0].emission", GL_OFFSET),
             offsetof(gpu::Material, emission));
-  EXPECT_EQ(property(GL_BUFFER_VARIABLE, "materials[0].specular_exponent",
-                     GL_TOP_LEVEL_ARRAY_STRIDE),
-            sizeof(gpu::Material));
+  EXPECT_EQ(
+      property(GL_BUFFER_VARIABLE, "materials[0].specular_exponent", GL_TOP_LEVEL_ARRAY_STRIDE),
+      sizeof(gpu::Material));
   EXPECT_EQ(property(GL_UNIFORM, "camera.position", GL_OFFSET), offsetof(gpu::Camera, position));
   EXPECT_EQ(property(GL_UNIFORM, "camera.image_size", GL_OFFSET),
             offsetof(gpu::Camera, image_size));

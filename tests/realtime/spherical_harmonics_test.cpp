@@ -49,21 +49,21 @@ TEST(SphericalHarmonics, ProjectionRecoversAConstantAndAClampedCosine) {
   const std::vector<double> lobe =
       projectOnCube([](const glm::vec3& d) { return glm::dvec3(std::max(0.0f, d.z)); }, 64, 3, 1);
   const double expected[kShMaxCoefficients] = {std::sqrt(kPi) / 2,
-                                             0,
-                                             std::sqrt(kPi / 3),
-                                             0,
-                                             0,
-                                             0,
-                                             std::sqrt(5 * kPi) / 8,
-                                             0,
-                                             0,
-                                             0,
-                                             0,
-                                             0,
-                                             0,
-                                             0,
-                                             0,
-                                             0};
+                                               0,
+                                               std::sqrt(kPi / 3),
+                                               0,
+                                               0,
+                                               0,
+                                               std::sqrt(5 * kPi) / 8,
+                                               0,
+                                               0,
+                                               0,
+                                               0,
+                                               0,
+                                               0,
+                                               0,
+                                               0,
+                                               0};
   for (std::size_t i = 0; i < lobe.size(); ++i) EXPECT_NEAR(lobe[i], expected[i], 2e-3) << i;
 }
 

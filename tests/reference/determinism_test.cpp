@@ -1,4 +1,5 @@
-// Same inputs → bit-identical images, whatever the thread count (DESIGN.md, "Randomness").
+// Same inputs → bit-identical images, whatever the thread count (docs/architecture.md,
+// "Randomness").
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"
 

@@ -223,7 +223,7 @@ TEST_F(HtmlReport, TrendChartsFollowTheJobOverTheHistory) {
   ReportContext context;
   for (int i = 0; i < 3; ++i) {
     results::RunResults run = test::syntheticReportResults("run-" + std::to_string(i),
-                                                  "abcdef" + std::to_string(i) + "00");
+                                                           "abcdef" + std::to_string(i) + "00");
     run.jobs[1].metrics[0].second = 0.001 * (i + 1);
     context.history.push_back(run);
   }

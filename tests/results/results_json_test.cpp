@@ -74,8 +74,9 @@ TEST(ResultsJson, FilesFromBeforeTheFigureFieldsStillRead) {
 
 // The per-pass timings as results.json and timings.json hold them (docs/results-schema.md).
 TEST(ResultsJson, PassTimingsWriteEveryFieldAndTheRawSamples) {
-  const metrics::PassTimings timings = test::syntheticTimings(
-      {{"frame", {10, 12, 11, 13, 14}}, {"frame/a", {4, 5, 4, 6, 5}}, {"frame/b", {3, 3, 3, 3, 3}, 3}});
+  const metrics::PassTimings timings = test::syntheticTimings({{"frame", {10, 12, 11, 13, 14}},
+                                                               {"frame/a", {4, 5, 4, 6, 5}},
+                                                               {"frame/b", {3, 3, 3, 3, 3}, 3}});
   const json j = passTimingsToJson(timings);
   const nlohmann::json parsed = nlohmann::json::parse(j.dump());
   EXPECT_EQ(parsed["clock"], "gpu");

@@ -34,7 +34,8 @@ constexpr std::uint32_t kVerifySpp = 64;
 TEST(StoreVerification, PassesOnAnUntouchedEntry) {
   TempDir dir;
   const StoredReference stored = obtainReference(dir.path(), smallReferenceSpec());
-  const VerifyResult r = verifyStoreEntry(ReferenceStore(dir.path()), stored.entry, kVerifySpp, kSignificance);
+  const VerifyResult r =
+      verifyStoreEntry(ReferenceStore(dir.path()), stored.entry, kVerifySpp, kSignificance);
   EXPECT_TRUE(r.passed) << r.problem;
   EXPECT_EQ(r.key, stored.entry.key);
   EXPECT_EQ(r.tested, 24u * 24u * 3u);
@@ -48,7 +49,8 @@ TEST(StoreVerification, FailsWhenTheStoredMeanIsTwentyPercentHigh) {
   const StoredReference stored =
       obtainReference(dir.path(), smallReferenceSpec("cornell", 24, 256));
   test::scaleStoredMean(stored.entry, 1.2f);
-  const VerifyResult r = verifyStoreEntry(ReferenceStore(dir.path()), stored.entry, 256, kSignificance);
+  const VerifyResult r =
+      verifyStoreEntry(ReferenceStore(dir.path()), stored.entry, 256, kSignificance);
   EXPECT_FALSE(r.passed);
   EXPECT_THAT(r.problem, HasSubstr("Z-test"));
   // Far from the edge: the renders are deterministic and 213 of the 1728 values fail (a 20% bias

@@ -534,8 +534,8 @@ TEST_F(SuiteFileTest, PassesMustBeDeclaredByTheTechnique) {
     return std::string(kSuite) + "\n[[paper]]\njob = \"" + job + "\"\nquantity = \"" + quantity +
            "\"\nvalue = 1\nsource = \"A paper\"\n";
   };
-  EXPECT_EQ(load(paper("direct-sweep/shadow=pcf", "frame/lights/shadow map + shading")).paper.size(),
-            1u);
+  EXPECT_EQ(
+      load(paper("direct-sweep/shadow=pcf", "frame/lights/shadow map + shading")).paper.size(), 1u);
   EXPECT_EQ(load(paper("direct-sweep/shadow=pcf", "g-buffer + relmse")).paper.size(), 1u);
   const std::string message = expectErrorAt(
       paper("direct-sweep/shadow=pcf", "frame/lights/relight cube maps"), "quantity = ");
@@ -550,10 +550,9 @@ TEST_F(SuiteFileTest, PassesMustBeDeclaredByTheTechnique) {
   const std::string chart = std::string(kSuite) + "\n[[chart]]\ntitle = \"t\"\n";
   EXPECT_THAT(expectErrorAt(chart + "x = \"parameter:shadow\"\ny = \"shadow maps\"\n", "y = "),
               HasSubstr("chart.y 'shadow maps' names the pass 'shadow maps'"));
-  EXPECT_THAT(
-      expectErrorAt(chart + "jobs = \"cornell-reference\"\nx = \"frame\"\ny = \"relmse\"\n",
-                    "x = "),
-      HasSubstr("reference jobs are not timed"));
+  EXPECT_THAT(expectErrorAt(chart + "jobs = \"cornell-reference\"\nx = \"frame\"\ny = \"relmse\"\n",
+                            "x = "),
+              HasSubstr("reference jobs are not timed"));
 }
 
 TEST_F(SuiteFileTest, ChartsNameQuantitiesAndJobsOfTheSuite) {

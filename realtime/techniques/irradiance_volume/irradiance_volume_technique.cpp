@@ -61,9 +61,8 @@ void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int he
   lighting_.prepare(scene);
 
   const int count = sh::shCoefficientCount(band_);
-  coefficients_ = gl::Buffer(std::size_t(gpu::probeCoefficientIndex(grid_.probeCount(), 0)) *
-                                 sizeof(glm::vec4),
-                             nullptr);
+  coefficients_ = gl::Buffer(
+      std::size_t(gpu::probeCoefficientIndex(grid_.probeCount(), 0)) * sizeof(glm::vec4), nullptr);
   weights_ = gl::Buffer::fromVector(sh::cubeProjectionWeights(face_, band_));
   std::vector<float> phong;  // per material, bands 0..3
   for (const scene::Material& m : scene.scene().materials) {
@@ -233,8 +232,9 @@ TechniqueInfo irradianceVolumeTechniqueInfo() {
   passes.add(passPath({kFramePass, kGBufferPass}), "what each camera pixel's primary ray hits");
   DirectLighting::declarePasses(
       passes, kFramePass,
-      {{kProbeDirectPass, "light added into the probes' cube maps (Table 1: rendering cube maps "
-                          "using raster data)"}});
+      {{kProbeDirectPass,
+        "light added into the probes' cube maps (Table 1: rendering cube maps "
+        "using raster data)"}});
   passes.add(passPath({kFramePass, kShProjectionPass}),
              "eq. 2: the lit cube maps projected to SH coefficients, per bounce");
   passes.add(passPath({kFramePass, kRelightProbesPass}),

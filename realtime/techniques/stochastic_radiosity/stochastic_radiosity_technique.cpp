@@ -79,16 +79,16 @@ void StochasticRadiosityTechnique::prepare(const GpuScene& scene, int /*width*/,
     fb.checkComplete();
   }
   update_pass_ = gl::FullScreenPass("realtime/techniques/stochastic_radiosity/update.frag.glsl",
-                                     visibility_->defines());
+                                    visibility_->defines());
   const gl::Program& update = update_pass_.program();
   visibility_->setLookupConstants(update);
   glProgramUniform1f(update.id(), update.uniform("u_texel_area"),
                      layout_.texels_per_unit > 0
                          ? 1.0f / (layout_.texels_per_unit * layout_.texels_per_unit)
                          : 0.0f);
-  view_program_ =
-      gl::buildProgram({{GL_VERTEX_SHADER, "realtime/techniques/stochastic_radiosity/view.vert.glsl"},
-                        {GL_FRAGMENT_SHADER, "realtime/techniques/stochastic_radiosity/view.frag.glsl"}});
+  view_program_ = gl::buildProgram(
+      {{GL_VERTEX_SHADER, "realtime/techniques/stochastic_radiosity/view.vert.glsl"},
+       {GL_FRAGMENT_SHADER, "realtime/techniques/stochastic_radiosity/view.frag.glsl"}});
 
   // Step 4: the power of the initial estimate (emission and injected light alone): an update
   // with no shooter (the Shooters buffer starts empty) and m = 1; then its pyramid.

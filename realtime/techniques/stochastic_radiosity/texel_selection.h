@@ -8,8 +8,9 @@
 //   kCpu: the power map is read back and searched linearly with a running sum (the paper's first
 //         implementation, whose read-back it found to dominate the iteration).
 // Both write the selected texels into one storage buffer (Shooters, whose record is declared in
-// stochastic_radiosity_shared.h), which the later passes read on the GPU. Several selections can run at once (one per value of u), which
-// the tests use; the technique selects one texel per iteration.
+// stochastic_radiosity_shared.h), which the later passes read on the GPU. Several selections can
+// run at once (one per value of u), which the tests use; the technique selects one texel per
+// iteration.
 #pragma once
 
 #include "realtime/gl/objects.h"
