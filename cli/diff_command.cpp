@@ -1,15 +1,23 @@
-// gibench diff BASE NEW [--json] [--db FILE] [--store DIR]
+// gibench diff BASE NEW [--json] [--verbose] [--db FILE] [--store DIR] [--history-runs N]
+//                      [--strict-timing] [--confirm [--pairs N] [--base-gibench PATH]
+//                      [--new-gibench PATH]]
 // Exit 0 when nothing regressed, 1 when something did (so `git bisect run` can drive it), 2 on
 // bad input.
 #include "cli/commands.h"
 #include "cli/history_location.h"
 #include "common/input_error.h"
+#include "common/subprocess.h"
+#include "gib/version.h"
 #include "results/results_diff.h"
 #include "results/results_json.h"
+#include "results/timing_history.h"
+#include "suites/timing_confirmation.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <charconv>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -20,10 +28,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct DiffOptions {
+struct DiffCommandOptions {
   std::string base, next;
   bool json = false;
+  bool verbose = false;
   HistoryLocation history;
+  std::size_t history_runs = 30;
+  bool strict_timing = false;
+  bool confirm = false;
+  int pairs = 6;
+  std::string base_gibench, new_gibench;
+  std::string gl_device;
 };
 
 std::optional<std::int64_t> parseRowNumber(const std::string& text) {
@@ -57,21 +72,86 @@ results::RunResults resolveRun(const std::string& argument, const HistoryLocatio
   return std::move(*run);
 }
 
-int runDiff(const DiffOptions& o) {
+// The comparable earlier runs of the history database, when there is one: the run-to-run spread
+// each timing is judged against. A database nobody chose may be absent (nothing recorded yet).
+results::TimingHistory timingHistory(const DiffCommandOptions& o, const results::RunResults& base,
+                                     const results::RunResults& next) {
+  std::error_code ec;
+  if (!fs::exists(o.history.path(), ec)) return {};
+  return results::loadTimingHistory(o.history.openExisting(), base, next, o.history_runs);
+}
+
+// The build that made `run`: the given one, else this program when it has the run's version.
+fs::path buildOf(const results::RunResults& run, const std::string& given, const char* option) {
+  if (!given.empty()) {
+    if (access(given.c_str(), X_OK) != 0)
+      throw InputError(
+          fmt::format("{} '{}' is not an executable; give the gibench of that run's "
+                      "build",
+                      option, given));
+    return given;
+  }
+  if (run.run.gibench_version == kVersion) return currentExecutable();
+  throw InputError(fmt::format(
+      "--confirm reruns run {}'s jobs with its own build (gibench {}), and this is {}; give it "
+      "with {} PATH",
+      run.run.id, run.run.gibench_version, kVersion, option));
+}
+
+// Settles every timing change worth it by interleaved A/B runs (suites/timing_confirmation.h).
+void confirmTimings(results::DiffReport& diff, const results::RunResults& base,
+                    const results::RunResults& next, const DiffCommandOptions& o) {
+  suites::ConfirmationOptions options;
+  options.base_gibench = buildOf(base, o.base_gibench, "--base-gibench");
+  options.new_gibench = buildOf(next, o.new_gibench, "--new-gibench");
+  options.pairs = o.pairs;
+  options.gl_device = o.gl_device;
+  char pattern[] = "/tmp/gibench-confirm-XXXXXX";
+  if (!mkdtemp(pattern)) throw std::runtime_error("cannot make a temporary directory");
+  options.work_dir = pattern;
+  options.log = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } cleanup{options.work_dir};
+  for (results::TimingChange& change : diff.timings) {
+    if (!results::worthConfirming(change)) continue;
+    const results::JobResult* base_job = base.findJob(change.job);
+    const results::JobResult* next_job = next.findJob(change.job);
+    try {
+      suites::InterleavedRuns runs = suites::runInterleaved(*base_job, *next_job, options);
+      results::confirmTiming(change, std::move(runs.base_ms), std::move(runs.new_ms));
+    } catch (const std::runtime_error& e) {
+      // A job one build cannot render keeps the verdict it had, with the reason.
+      fmt::print(stderr, "gibench: could not confirm {}: {}\n", change.job, e.what());
+    }
+  }
+}
+
+int runDiff(const DiffCommandOptions& o) {
+  if (o.pairs < 2 || o.pairs > 100)
+    throw InputError(fmt::format("--pairs {} cannot be tested; give 2 to 100", o.pairs));
   const results::RunResults base = resolveRun(o.base, o.history);
   const results::RunResults next = resolveRun(o.next, o.history);
-  const results::DiffReport diff = results::diffResults(base, next);
+  results::DiffOptions options;
+  options.history = timingHistory(o, base, next);
+  options.strict_timing = o.strict_timing;
+  results::DiffReport diff = results::diffResults(base, next, options);
+  if (o.confirm) confirmTimings(diff, base, next, o);
   if (o.json)
     fmt::print("{}\n", results::diffJson(diff).dump());
   else
-    fmt::print("{}", results::formatDiff(diff));
+    fmt::print("{}", results::formatDiff(diff, o.verbose));
   return diff.regressions() > 0 ? 1 : 0;
 }
 
 }  // namespace
 
 CommandRunner addDiffCommand(CLI::App& app) {
-  auto o = std::make_shared<DiffOptions>();
+  auto o = std::make_shared<DiffCommandOptions>();
   CLI::App* diff = app.add_subcommand(
       "diff", "Compare two runs; exit 1 when the new one regressed (for git bisect run)");
   diff->add_option("base", o->base,
@@ -80,7 +160,24 @@ CommandRunner addDiffCommand(CLI::App& app) {
       ->required();
   diff->add_option("new", o->next, "new run, in the same forms")->required();
   diff->add_flag("--json", o->json, "print one JSON object instead of a table");
+  diff->add_flag("--verbose", o->verbose, "also list the timings judged unchanged");
   o->history.addOptions(*diff);
+  diff->add_option("--history-runs", o->history_runs,
+                   "comparable earlier runs of the history whose spread judges timings")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t(1), std::size_t(1000)));
+  diff->add_flag("--strict-timing", o->strict_timing,
+                 "count an unconfirmed slowdown as a regression");
+  diff->add_flag("--confirm", o->confirm,
+                 "settle each changed timing by rendering its job with the base and the new build "
+                 "alternately on this machine (A B A B …)");
+  diff->add_option("--pairs", o->pairs, "A/B runs of each build per confirmed job")
+      ->capture_default_str();
+  diff->add_option("--base-gibench", o->base_gibench,
+                   "the base run's build (default: this gibench, if the base run is its own)");
+  diff->add_option("--new-gibench", o->new_gibench,
+                   "the new run's build (default: this gibench, if the new run is its own)");
+  diff->add_option("--gl-device", o->gl_device, "auto | surfaceless | N, for the A/B renders");
   return [o] { return runDiff(*o); };
 }
 

@@ -21,4 +21,12 @@ double normalQuantile(double p);
 // `tests` independent tests, 1 − (1 − α)^(1/m).
 double sidakSignificance(double alpha, double tests);
 
+// Regularised incomplete beta I_x(a, b), for a, b > 0 and 0 ≤ x ≤ 1.
+double regularizedBetaI(double a, double b, double x);
+
+// Student's t distribution with `dof` > 0 degrees of freedom: P(T ≤ t), and its inverse (to
+// 1e-12 in p).
+double studentTCdf(double t, double dof);
+double studentTQuantile(double p, double dof);
+
 }  // namespace gib::metrics

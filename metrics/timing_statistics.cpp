@@ -2,6 +2,8 @@
 
 #include "metrics/distributions.h"
 
+#include <numeric>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -35,39 +37,92 @@ TimingSummary summarizeTimings(std::span<const double> samples) {
   return s;
 }
 
-MannWhitneyResult mannWhitneyU(std::span<const double> a, std::span<const double> b) {
-  if (a.empty() || b.empty()) throw std::invalid_argument("Mann-Whitney needs two samples");
-  // Rank the pooled sample, giving tied values their average rank.
-  struct Value {
-    double x;
-    bool first;
-  };
-  std::vector<Value> pooled;
-  for (double x : a) pooled.push_back({x, true});
-  for (double x : b) pooled.push_back({x, false});
-  std::sort(pooled.begin(), pooled.end(), [](const Value& l, const Value& r) { return l.x < r.x; });
-  const double n1 = double(a.size()), n2 = double(b.size()), n = n1 + n2;
-  double rank_sum_first = 0, tie_term = 0;
-  for (std::size_t i = 0; i < pooled.size();) {
-    std::size_t j = i;
-    while (j < pooled.size() && pooled[j].x == pooled[i].x) ++j;
-    const double ties = double(j - i);
-    const double average_rank = (double(i + 1) + double(j)) / 2.0;
-    for (std::size_t k = i; k < j; ++k)
-      if (pooled[k].first) rank_sum_first += average_rank;
-    tie_term += ties * ties * ties - ties;
-    i = j;
+}  // namespace gib::metrics
+
+namespace gib::metrics {
+
+namespace {
+
+std::vector<double> logs(std::span<const double> samples) {
+  std::vector<double> out;
+  out.reserve(samples.size());
+  for (double x : samples) {
+    if (!(x > 0) || !std::isfinite(x))
+      throw std::invalid_argument("timing samples must be positive and finite");
+    out.push_back(std::log(x));
   }
-  MannWhitneyResult r;
-  r.u = rank_sum_first - n1 * (n1 + 1) / 2.0;
-  const double mean_u = n1 * n2 / 2.0;
-  const double variance_u = n1 * n2 / 12.0 * ((n + 1) - tie_term / (n * (n - 1)));
-  if (variance_u <= 0) return r;  // every value tied: no evidence of a difference
-  // Continuity correction: U moves in steps of 1 (or 1/2 with ties).
-  const double distance = std::max(0.0, std::abs(r.u - mean_u) - 0.5);
-  r.z = (r.u > mean_u ? 1 : -1) * distance / std::sqrt(variance_u);
-  r.p_value = std::min(1.0, 2.0 * (1.0 - normalCdf(std::abs(r.z))));
-  return r;
+  return out;
+}
+
+double mean(const std::vector<double>& x) {
+  return std::accumulate(x.begin(), x.end(), 0.0) / double(x.size());
+}
+
+double sampleVariance(const std::vector<double>& x) {
+  const double m = mean(x);
+  double sum = 0;
+  for (double v : x) sum += (v - m) * (v - m);
+  return sum / double(x.size() - 1);
+}
+
+// The test of an estimated log ratio with standard error `se` on `dof` degrees of freedom.
+TimingTest tTest(double log_ratio, double se, double dof, double significance) {
+  TimingTest test;
+  test.ratio = std::exp(log_ratio);
+  test.degrees_of_freedom = dof;
+  const double critical = studentTQuantile(1.0 - 0.5 * significance, dof);
+  const double power = studentTQuantile(kDetectionPower, dof);
+  test.detectable_change = std::exp((critical + power) * se) - 1.0;
+  if (se > 0) {
+    const double t = std::abs(log_ratio) / se;
+    test.p_value = 2.0 * (1.0 - studentTCdf(t, dof));
+  } else {
+    test.p_value = log_ratio == 0 ? 1.0 : 0.0;
+  }
+  return test;
+}
+
+}  // namespace
+
+double runToRunSpread(std::span<const double> run_medians_ms) {
+  if (run_medians_ms.size() < 2)
+    throw std::invalid_argument("a run-to-run spread needs two or more runs");
+  return std::exp(std::sqrt(sampleVariance(logs(run_medians_ms)))) - 1.0;
+}
+
+TimingTest testAgainstRunToRunSpread(double base_ms, double new_ms,
+                                     std::span<const double> history_ms, double significance) {
+  if (history_ms.size() < 2)
+    throw std::invalid_argument("the run-to-run spread needs two or more earlier runs");
+  const std::vector<double> x = logs(history_ms);
+  const double s = std::sqrt(sampleVariance(x));
+  const double base = std::log(base_ms), next = std::log(new_ms);
+  return tTest(next - base, s * std::sqrt(2.0), double(x.size() - 1), significance);
+}
+
+TimingTest testInterleavedPairs(std::span<const double> a_ms, std::span<const double> b_ms,
+                                double significance) {
+  if (a_ms.size() != b_ms.size() || a_ms.size() < 2)
+    throw std::invalid_argument("interleaved pairs need two or more (a, b) pairs");
+  const std::vector<double> a = logs(a_ms), b = logs(b_ms);
+  std::vector<double> d;
+  for (std::size_t i = 0; i < a.size(); ++i) d.push_back(b[i] - a[i]);
+  const double n = double(d.size());
+  return tTest(mean(d), std::sqrt(sampleVariance(d) / n), n - 1.0, significance);
+}
+
+TimingTest testWithinRuns(std::span<const double> base_ms, std::span<const double> new_ms,
+                          double significance) {
+  if (base_ms.size() < 2 || new_ms.size() < 2)
+    throw std::invalid_argument("a within-run comparison needs two or more samples of each");
+  const std::vector<double> a = logs(base_ms), b = logs(new_ms);
+  const double va = sampleVariance(a) / double(a.size()), vb = sampleVariance(b) / double(b.size());
+  const double se = std::sqrt(va + vb);
+  // Welch–Satterthwaite degrees of freedom.
+  double dof = double(a.size() + b.size() - 2);
+  if (va + vb > 0)
+    dof = (va + vb) * (va + vb) / (va * va / double(a.size() - 1) + vb * vb / double(b.size() - 1));
+  return tTest(mean(b) - mean(a), se, dof, significance);
 }
 
 }  // namespace gib::metrics

@@ -1,5 +1,7 @@
-// Robust summaries of timing samples and a test of whether two samples differ: these machines
-// are shared and noisy, so medians and rank tests rather than means and t-tests.
+// Robust summaries of timing samples, and the tests that tell a change of a timing from noise:
+// these machines are shared and noisy, so medians for summaries, and tests of log ratios whose
+// unit is a whole run (against the spread between runs, or in interleaved A/B pairs) rather than
+// the frames of one run, which see nothing of the drift between runs.
 #pragma once
 
 #include <cstddef>
@@ -25,14 +27,43 @@ TimingSummary summarizeTimings(std::span<const double> samples);
 // type 7, the default of R and NumPy).
 double quantile(std::span<const double> samples, double q);
 
-struct MannWhitneyResult {
-  double u = 0;        // U statistic of the first sample
-  double z = 0;        // normal approximation with tie and continuity corrections
-  double p_value = 1;  // two-sided
+// A timing comparison of two settings (a base and a new build) by one kind of evidence, in the
+// log domain: times are positive and their noise multiplicative, so a ratio is the natural
+// measure and ln(time) is close to normal on these machines.
+struct TimingTest {
+  double ratio = 1;    // estimated new / base
+  double p_value = 1;  // two-sided, for "no change"
+  double degrees_of_freedom = 0;
+  // The smallest relative change (|ratio − 1|) this evidence detects with probability
+  // `kDetectionPower` at the test's significance: what "unchanged" means.
+  double detectable_change = 0;
 };
 
-// Mann–Whitney U test: do the two samples come from the same distribution? The normal
-// approximation is accurate for samples of about eight or more each. Throws for an empty sample.
-MannWhitneyResult mannWhitneyU(std::span<const double> a, std::span<const double> b);
+// The power at which TimingTest::detectable_change is stated.
+inline constexpr double kDetectionPower = 0.95;
+
+// The spread of per-run medians: exp(s) − 1 for s the sample standard deviation of their logs
+// (a relative one-sigma spread). Needs two or more runs.
+double runToRunSpread(std::span<const double> run_medians_ms);
+
+// Two runs against the run-to-run spread of comparable earlier runs (`history_ms`, per-run
+// medians): under "no change", ln(new) − ln(base) is the difference of two draws of the runs'
+// distribution, so ln(new/base) / (s·√2) follows Student's t with k − 1 degrees of freedom, s the
+// sample standard deviation of ln(history). Needs two or more history runs
+// (std::invalid_argument otherwise).
+TimingTest testAgainstRunToRunSpread(double base_ms, double new_ms,
+                                     std::span<const double> history_ms, double significance);
+
+// Interleaved A/B pairs (a_i run right before b_i on one machine): the paired t-test of
+// ln(b_i / a_i), which cancels the slow drift of the machine's state that makes two separate runs
+// differ. Needs two or more pairs of equal length (std::invalid_argument otherwise).
+TimingTest testInterleavedPairs(std::span<const double> a_ms, std::span<const double> b_ms,
+                                double significance);
+
+// Two independent samples of per-repeat (or per-frame) times of two runs: Welch's t-test of the
+// logs. It sees only the noise within each run, not the drift between runs, so the harness takes
+// it as a hint, never as proof of a regression. Needs two or more of each.
+TimingTest testWithinRuns(std::span<const double> base_ms, std::span<const double> new_ms,
+                          double significance);
 
 }  // namespace gib::metrics

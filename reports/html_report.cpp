@@ -53,7 +53,7 @@ fs::path writeHtmlReport(const fs::path& run_dir, const results::RunResults& res
     throw InputError(fmt::format("cannot create '{}'; make the run directory writable",
                                  (run_dir / "report").string()));
 
-  const RunComparison comparison(results, context.previous);
+  const RunComparison comparison(results, context.previous, context.history);
   // Job pages first: index.html never links to a page that is not there yet.
   for (const results::JobResult& job : results.jobs)
     image::writeTextFile(run_dir / jobPageFile(job),

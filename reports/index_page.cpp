@@ -39,6 +39,7 @@ std::string runFacts(const results::RunInfo& run) {
       {"parallel jobs", fmt::format("{}", run.parallel_jobs)},
       {"reference store", run.store},
       {"complete", run.complete ? "yes" : "no: some jobs of the suite were left out (--only)"},
+      {"conditions", conditionsText(run.conditions)},
   });
 }
 
@@ -50,13 +51,14 @@ std::string comparisonIntro(const RunComparison& comparison) {
   const results::DiffReport& diff = *comparison.diff();
   return fmt::format(
       "<p>Compared with the previous run <strong>{}</strong> (commit {}, started {}): {} "
-      "regression{}, {} improvement{}.</p>\n"
+      "regression{}, {} improvement{}, {} unconfirmed timing change{}.</p>\n"
       "<p class=\"legend\"><span class=\"verdict-regressed\">worse beyond tolerance</span>"
       "<span class=\"verdict-improved\">better beyond tolerance</span>"
-      "<span class=\"verdict-unchanged\">within tolerance, or new</span></p>\n",
+      "<span class=\"verdict-unconfirmed\">a timing beyond tolerance that noise may explain"
+      "</span><span class=\"verdict-unchanged\">within tolerance, or new</span></p>\n",
       escapeHtml(previous.id), escapeHtml(shortCommit(previous)), escapeHtml(previous.started),
       diff.regressions(), diff.regressions() == 1 ? "" : "s", diff.improvements(),
-      diff.improvements() == 1 ? "" : "s");
+      diff.improvements() == 1 ? "" : "s", diff.unconfirmed(), diff.unconfirmed() == 1 ? "" : "s");
 }
 
 std::string jobLink(const results::RunResults& results, const std::string& id) {
@@ -87,12 +89,10 @@ std::string regressionsSection(const results::RunResults& results,
                     escapeHtml(toleranceText(c.tolerance))});
   for (const results::TimingChange& c : diff.timings)
     if (c.verdict == results::Verdict::kRegressed)
-      table.addRow({jobLink(results, c.job), "median frame time (ms)",
-                    formatNumber(c.base_median_ms), formatNumber(c.next_median_ms),
-                    formatChange(c.relative_change),
-                    escapeHtml(fmt::format(
-                        "+{} and Mann–Whitney p < {} (p = {})", formatShare(c.tolerance.relative),
-                        formatNumber(c.tolerance.significance), formatNumber(c.p_value, 2)))});
+      table.addRow(
+          {jobLink(results, c.job), "median frame time (ms)", formatNumber(c.base_median_ms),
+           formatNumber(c.next_median_ms), formatChange(c.relative_change),
+           escapeHtml(fmt::format("+{}; {}", formatShare(c.tolerance.relative), c.explanation()))});
   for (const results::JobPresence& p : diff.presence)
     if (p.verdict == results::Verdict::kMissing)
       table.addRow({escapeHtml(p.job), "the job", "ran", "missing", "", ""});

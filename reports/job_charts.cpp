@@ -7,6 +7,7 @@
 #include "reports/svg_charts.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <functional>
@@ -30,10 +31,9 @@ std::string timingsIntro(const metrics::PassTimings& timings,
     intro += fmt::format(" ({} fps)", formatNumber(*fps, 3));
   if (compared && compared->timing) {
     const results::TimingChange& t = *compared->timing;
-    intro += fmt::format("; previous run {} ms, now {} (Mann–Whitney p = {})",
-                         formatNumber(t.base_median_ms),
+    intro += fmt::format("; previous run {} ms, now {}: {} ({})", formatNumber(t.base_median_ms),
                          verdictSpan(formatNumber(t.next_median_ms) + " ms", compared->timing),
-                         formatNumber(t.p_value, 2));
+                         results::verdictName(t.verdict), escapeHtml(t.explanation()));
   }
   return intro + ".</p>\n";
 }
@@ -61,6 +61,22 @@ std::vector<PassBar> passBars(const metrics::PassTimings& timings) {
     bars.push_back({pass.name, pass.depth, pass.reported.median, pass.reported.first_quartile,
                     pass.reported.third_quartile});
   return bars;
+}
+
+// A job run several times: each run's median, the one shown below being the median of them.
+std::string repeatsText(const results::JobResult& job) {
+  if (job.repeats.size() < 2) return {};
+  std::vector<std::string> medians;
+  for (double median : job.repeatMediansMs()) medians.push_back(formatNumber(median));
+  return fmt::format(
+      "<p>{} runs of the job, each with a fresh GL context and interleaved with the other jobs' "
+      "runs; their median frame times (ms): {}. The table shows the run of the median.</p>\n",
+      job.repeats.size(), escapeHtml(fmt::format("{}", fmt::join(medians, ", "))));
+}
+
+std::string conditionsParagraph(const results::RunConditions& conditions) {
+  return fmt::format("<p class=\"muted\">Machine around the job: {}.</p>\n",
+                     escapeHtml(conditionsText(conditions)));
 }
 
 std::string phasesTable(const results::JobResult& job) {
@@ -119,7 +135,8 @@ std::string timingsSection(const results::JobResult& job,
   if (!job.timings)
     return phases.empty() ? std::string() : htmlSection("timings", "Timings", phases);
   return htmlSection("timings", "Timings",
-                     timingsIntro(*job.timings, compared) + "<div class=\"charts\">\n" +
+                     timingsIntro(*job.timings, compared) + repeatsText(job) +
+                         conditionsParagraph(job.conditions) + "<div class=\"charts\">\n" +
                          passTable(*job.timings, "frame") +
                          passTimingChart(passBars(*job.timings)) + "\n</div>\n" + phases);
 }

@@ -3,7 +3,10 @@
 #include "common/join.h"
 #include "reports/html_text.h"
 
+#include <fmt/format.h>
+
 #include <filesystem>
+#include <vector>
 
 namespace gib::reports {
 
@@ -24,6 +27,21 @@ std::string formatAssignments(const results::Assignments& assignments) {
 
 std::string jobPageFile(const results::JobResult& job) {
   return "report/" + job.slug + ".html";
+}
+
+std::string conditionsText(const results::RunConditions& c) {
+  std::vector<std::string> parts;
+  if (c.load_before >= 0)
+    parts.push_back(
+        c.load_after >= 0
+            ? fmt::format("load {:.2f} → {:.2f} (1-minute average)", c.load_before, c.load_after)
+            : fmt::format("load {:.2f} (1-minute average)", c.load_before));
+  if (!c.governor.empty()) parts.push_back("CPU governor " + c.governor);
+  if (c.other_gibench == 0) parts.push_back("no other gibench process");
+  if (c.other_gibench > 0)
+    parts.push_back(fmt::format("{} other gibench process{} running: timings share the machine",
+                                c.other_gibench, c.other_gibench == 1 ? "" : "es"));
+  return parts.empty() ? std::string("not recorded") : joinNames(parts, ", ");
 }
 
 std::string outputHref(const std::string& path, int depth) {

@@ -25,4 +25,8 @@ std::string jobPageFile(const results::JobResult& job);
 // `depth` directories below the run directory (0: index.html, 1: report/<slug>.html).
 std::string outputHref(const std::string& path, int depth);
 
+// The machine's state around a run or job, for people: "load 0.4 → 1.9 (1-minute average),
+// governor performance, no other gibench process"; parts that were not readable are left out.
+std::string conditionsText(const results::RunConditions& conditions);
+
 }  // namespace gib::reports

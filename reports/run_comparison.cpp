@@ -9,10 +9,13 @@ namespace gib::reports {
 
 namespace {
 
-// Folds one value's verdict into the job's: a regression outweighs an improvement.
+// Folds one value's verdict into the job's: a regression outweighs an unconfirmed change, which
+// outweighs an improvement.
 void fold(results::Verdict& overall, results::Verdict value) {
   if (value == results::Verdict::kRegressed || value == results::Verdict::kMissing)
     overall = results::Verdict::kRegressed;
+  else if (value == results::Verdict::kUnconfirmed && overall != results::Verdict::kRegressed)
+    overall = results::Verdict::kUnconfirmed;
   else if (value == results::Verdict::kImproved && overall == results::Verdict::kUnchanged)
     overall = results::Verdict::kImproved;
 }
@@ -28,10 +31,12 @@ std::string spanOf(const std::string& text, std::optional<results::Verdict> verd
 }  // namespace
 
 RunComparison::RunComparison(const results::RunResults& results,
-                             const std::optional<results::RunResults>& previous) {
+                             const std::optional<results::RunResults>& previous,
+                             const std::vector<results::RunResults>& history) {
   if (!previous) return;
   previous_run_ = previous->run;
-  diff_ = results::diffResults(*previous, results);
+  diff_ = results::diffResults(*previous, results,
+                               {results::timingHistoryOf(history, *previous, results)});
   for (const results::MetricChange& change : diff_->metrics) {
     JobComparison& job = jobs_[change.job];
     fold(job.overall, change.verdict);
@@ -57,6 +62,7 @@ const char* verdictClass(std::optional<results::Verdict> verdict) {
   if (verdict == results::Verdict::kRegressed || verdict == results::Verdict::kMissing)
     return "verdict-regressed";
   if (verdict == results::Verdict::kImproved) return "verdict-improved";
+  if (verdict == results::Verdict::kUnconfirmed) return "verdict-unconfirmed";
   return "verdict-unchanged";
 }
 

@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gib::reports {
 
@@ -28,9 +29,11 @@ struct JobComparison {
 
 class RunComparison {
  public:
-  // No previous run: nothing is compared and every lookup answers "no comparison".
+  // No previous run: nothing is compared and every lookup answers "no comparison". `history`
+  // (the suite's recent runs) gives timings their run-to-run spread (results/timing_history.h).
   RunComparison(const results::RunResults& results,
-                const std::optional<results::RunResults>& previous);
+                const std::optional<results::RunResults>& previous,
+                const std::vector<results::RunResults>& history = {});
 
   bool hasPrevious() const { return diff_.has_value(); }
   const std::optional<results::RunInfo>& previousRun() const { return previous_run_; }

@@ -1,5 +1,7 @@
 #include "results/results.h"
 
+#include "metrics/timing_statistics.h"
+
 #include <algorithm>
 
 namespace gib::results {
@@ -12,6 +14,21 @@ std::optional<double> JobResult::frameMedianMs() const {
 std::vector<double> JobResult::frameSamplesMs() const {
   if (!timings || timings->passes.empty()) return {};
   return timings->reportedSamples(timings->root());
+}
+
+std::vector<double> JobResult::repeatMediansMs() const {
+  std::vector<double> medians;
+  for (const metrics::PassTimings& repeat : repeats)
+    if (!repeat.passes.empty()) medians.push_back(repeat.root().reported.median);
+  if (medians.empty())
+    if (const std::optional<double> frame = frameMedianMs()) medians.push_back(*frame);
+  return medians;
+}
+
+std::optional<double> JobResult::runMedianMs() const {
+  const std::vector<double> medians = repeatMediansMs();
+  if (medians.empty()) return std::nullopt;
+  return metrics::quantile(medians, 0.5);
 }
 
 std::optional<double> JobResult::metric(const std::string& name) const {

@@ -79,6 +79,15 @@ struct ChartSpec {
   bool operator==(const ChartSpec&) const = default;
 };
 
+// The machine's state around a run or a job, recorded so that a noisy timing can be seen as such
+// (shown beside the timings in the report).
+struct RunConditions {
+  double load_before = -1, load_after = -1;  // 1-minute load average; −1 where unreadable
+  std::string governor;    // cpu0's frequency governor ("performance"); empty where unreadable
+  int other_gibench = -1;  // other gibench processes running at the start; −1 where unknown
+  bool operator==(const RunConditions&) const = default;
+};
+
 struct RunInfo {
   std::string id;  // unique: "<UTC yyyymmdd-hhmmss>-<suite>-<8 hex>"
   std::string suite;
@@ -97,9 +106,10 @@ struct RunInfo {
   std::string embree_version;
   // The GL implementation of the technique jobs; empty when none ran.
   std::string gl_vendor, gl_renderer, gl_version, gl_device;
-  int parallel_jobs = 1;  // --jobs
-  std::string store;      // reference store root
-  bool complete = true;   // false when some jobs were filtered out (--only)
+  int parallel_jobs = 1;     // --jobs
+  std::string store;         // reference store root
+  bool complete = true;      // false when some jobs were filtered out (--only)
+  RunConditions conditions;  // from the start to the end of the run
   bool operator==(const RunInfo&) const = default;
 };
 
@@ -154,6 +164,7 @@ struct JobResult {
   std::string slug;  // the id as a file name
   std::string case_name;
   std::string scene;       // built-in name or scene file stem
+  std::string scene_file;  // absolute path of a scene file; empty for a built-in scene
   std::string scene_hash;  // scene::hashScene
   std::string technique;   // catalogue name or "reference"
   Assignments parameters;  // technique parameters (every parameter, defaults included)
@@ -174,6 +185,10 @@ struct JobResult {
   // Iterative techniques: each iteration (step) timed as one unit, in the same form as `timings`
   // with the root pass named "iteration". Absent otherwise.
   std::optional<metrics::PassTimings> iteration_timings;
+  // A job run `repeats` > 1 times (each with a fresh GL context): every repeat's timings, in run
+  // order; `timings` is then the repeat of the median frame time. Empty for one run.
+  std::vector<metrics::PassTimings> repeats;
+  RunConditions conditions;  // around the job (all its repeats)
   double upload_ms = 0, prepare_ms = 0, iterate_ms = 0;
   int iterations = 0;
   NamedValues statistics;  // the technique's counts (vertices, texels, grid points)
@@ -185,6 +200,11 @@ struct JobResult {
 
   // The median frame time on the reported clock, when the job was timed.
   std::optional<double> frameMedianMs() const;
+  // What one run of the job measured, the unit run-to-run comparisons use: the median over its
+  // repeats of their median frame times, or the median frame time of a single run.
+  std::optional<double> runMedianMs() const;
+  // The median frame time of each repeat (one value for a job run once; empty when not timed).
+  std::vector<double> repeatMediansMs() const;
   // The per-frame samples of the whole frame on the reported clock (empty when not timed).
   std::vector<double> frameSamplesMs() const;
   // The value of a metric against the class reference, if measured.

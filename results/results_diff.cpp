@@ -1,7 +1,7 @@
 #include "results/results_diff.h"
 
+#include "metrics/distributions.h"
 #include "metrics/metric_registry.h"
-#include "metrics/timing_statistics.h"
 #include "results/json_number.h"
 
 #include <fmt/format.h>
@@ -63,25 +63,6 @@ void diffValues(const std::string& job, const NamedValues& base, const NamedValu
   }
 }
 
-// Both conditions (results/results.h, TimingTolerance): a change large enough to matter, and
-// one the rank test says is not noise.
-TimingChange diffTiming(const std::string& job, const std::vector<double>& base,
-                        const std::vector<double>& next, const TimingTolerance& tolerance) {
-  TimingChange change;
-  change.job = job;
-  change.base_median_ms = metrics::quantile(base, 0.5);
-  change.next_median_ms = metrics::quantile(next, 0.5);
-  change.relative_change = relativeChange(change.base_median_ms, change.next_median_ms);
-  change.p_value = metrics::mannWhitneyU(base, next).p_value;
-  change.tolerance = tolerance;
-  const bool significant = change.p_value < tolerance.significance;
-  if (significant && change.relative_change > tolerance.relative)
-    change.verdict = Verdict::kRegressed;
-  else if (significant && change.relative_change < -tolerance.relative)
-    change.verdict = Verdict::kImproved;
-  return change;
-}
-
 template <typename Change>
 std::size_t countVerdict(const std::vector<Change>& changes, Verdict verdict) {
   return std::size_t(std::count_if(changes.begin(), changes.end(),
@@ -97,18 +78,16 @@ std::string plural(std::size_t count, const char* noun) {
 }
 
 std::string formatMetricLine(const MetricChange& c) {
-  return fmt::format("{:<10} {}  {}  {:.6g} -> {:.6g}  {}  (tolerance {:g}%, absolute {:g})",
+  return fmt::format("{:<11} {}  {}  {:.6g} -> {:.6g}  {}  (tolerance {:g}%, absolute {:g})",
                      verdictName(c.verdict), c.job, c.metric, c.base, c.next,
                      formatPercent(c.relative_change), 100 * c.tolerance.relative,
                      c.tolerance.absolute);
 }
 
 std::string formatTimingLine(const TimingChange& c) {
-  return fmt::format(
-      "{:<10} {}  frame  {:.4g} ms -> {:.4g} ms  {}  (tolerance {:g}%, p = {:.2g} vs {:g})",
-      verdictName(c.verdict), c.job, c.base_median_ms, c.next_median_ms,
-      formatPercent(c.relative_change), 100 * c.tolerance.relative, c.p_value,
-      c.tolerance.significance);
+  return fmt::format("{:<11} {}  frame  {:.4g} ms -> {:.4g} ms  {}  (tolerance {:g}%; {})",
+                     verdictName(c.verdict), c.job, c.base_median_ms, c.next_median_ms,
+                     formatPercent(c.relative_change), 100 * c.tolerance.relative, c.explanation());
 }
 
 // The lines of one verdict: metrics, then timings, then jobs.
@@ -119,10 +98,33 @@ void appendLines(const DiffReport& diff, Verdict verdict, std::string& out) {
     if (c.verdict == verdict) out += formatTimingLine(c) + "\n";
   for (const JobPresence& p : diff.presence)
     if (p.verdict == verdict)
-      out += fmt::format("{:<10} {}  ({})\n", verdictName(verdict), p.job,
+      out += fmt::format("{:<11} {}  ({})\n", verdictName(verdict), p.job,
                          verdict == Verdict::kMissing ? "in the base run, not in the new one"
                          : verdict == Verdict::kAdded ? "new in this run"
                                                       : "the new run ran part of its suite");
+}
+
+// Timings judged unchanged are counted, with the range of changes their evidence could have
+// detected: "unchanged" is only as strong as the test behind it.
+std::string unchangedTimingsLine(const DiffReport& diff) {
+  std::vector<double> detectable;
+  std::size_t by_history = 0, confirmed = 0;
+  for (const TimingChange& c : diff.timings) {
+    if (c.verdict != Verdict::kUnchanged) continue;
+    detectable.push_back(c.detectable_change);
+    by_history += c.evidence == TimingEvidence::kHistory;
+    confirmed += c.evidence == TimingEvidence::kConfirmation;
+  }
+  if (detectable.empty()) return {};
+  const auto [least, most] = std::minmax_element(detectable.begin(), detectable.end());
+  const std::string range =
+      *least == *most ? formatPercent(*least).substr(1) + " or more"
+                      : formatPercent(*least).substr(1) + " to " + formatPercent(*most).substr(1);
+  return fmt::format(
+      "{:<11} {} timing{} within tolerance ({} by history, {} confirmed A/B, {} within the runs "
+      "only); their evidence detects changes of {}\n",
+      "unchanged", detectable.size(), detectable.size() == 1 ? "" : "s", by_history, confirmed,
+      detectable.size() - by_history - confirmed, range);
 }
 
 json toleranceJson(const Tolerance& t) {
@@ -131,37 +133,30 @@ json toleranceJson(const Tolerance& t) {
 
 }  // namespace
 
-const char* verdictName(Verdict verdict) {
-  switch (verdict) {
-    case Verdict::kUnchanged:
-      return "unchanged";
-    case Verdict::kImproved:
-      return "improved";
-    case Verdict::kRegressed:
-      return "regressed";
-    case Verdict::kMissing:
-      return "missing";
-    case Verdict::kAdded:
-      return "added";
-    case Verdict::kNotRun:
-      return "not run";
-  }
-  return "unknown";
+std::size_t DiffReport::regressions() const {
+  std::size_t strict = 0;
+  if (strict_timing)
+    for (const TimingChange& c : timings)
+      strict += c.verdict == Verdict::kUnconfirmed && c.relative_change > 0;
+  return countVerdict(metrics, Verdict::kRegressed) + countVerdict(timings, Verdict::kRegressed) +
+         countVerdict(presence, Verdict::kMissing) + strict;
 }
 
-std::size_t DiffReport::regressions() const {
-  return countVerdict(metrics, Verdict::kRegressed) + countVerdict(timings, Verdict::kRegressed) +
-         countVerdict(presence, Verdict::kMissing);
+std::size_t DiffReport::unconfirmed() const {
+  return countVerdict(timings, Verdict::kUnconfirmed);
 }
 
 std::size_t DiffReport::improvements() const {
   return countVerdict(metrics, Verdict::kImproved) + countVerdict(timings, Verdict::kImproved);
 }
 
-DiffReport diffResults(const RunResults& base, const RunResults& next) {
+DiffReport diffResults(const RunResults& base, const RunResults& next, const DiffOptions& options) {
   DiffReport diff;
   diff.base_run = base.run.id;
   diff.next_run = next.run.id;
+  diff.strict_timing = options.strict_timing;
+  // The timed jobs of both runs, judged once their number (the Šidák family) is known.
+  std::vector<std::pair<const JobResult*, const JobResult*>> timed;
   // Jobs by id: RunResults::findJob is a linear search, and nightly runs have a thousand jobs.
   std::unordered_map<std::string_view, const JobResult*> next_jobs, base_jobs;
   for (const JobResult& job : next.jobs) next_jobs.emplace(job.id, &job);
@@ -178,31 +173,46 @@ DiffReport diffResults(const RunResults& base, const RunResults& next) {
     // "full:ssim" is judged like "ssim": same tolerance, same direction.
     diffValues(base_job.id, base_job.metrics_full, next_job->metrics_full, kFullPrefix,
                next.tolerances, diff.metrics);
-    const std::vector<double> base_frames = base_job.frameSamplesMs();
-    const std::vector<double> next_frames = next_job->frameSamplesMs();
-    if (!base_frames.empty() && !next_frames.empty())
-      diff.timings.push_back(
-          diffTiming(base_job.id, base_frames, next_frames, next.tolerances.timing));
+    if (base_job.runMedianMs() && next_job->runMedianMs()) timed.emplace_back(&base_job, next_job);
+  }
+  diff.timing_significance = next.tolerances.timing.significance;
+  diff.timing_comparison_significance =
+      timed.empty() ? diff.timing_significance
+                    : metrics::sidakSignificance(diff.timing_significance, double(timed.size()));
+  static const std::vector<double> kNoHistory;
+  for (const auto& [base_job, next_job] : timed) {
+    const auto found = options.history.find(next_job->id);
+    const std::vector<double>& history =
+        found == options.history.end() ? kNoHistory : found->second;
+    diff.timings.push_back(judgeTiming(*base_job, *next_job, history, next.tolerances.timing,
+                                       diff.timing_comparison_significance));
   }
   for (const JobResult& next_job : next.jobs)
     if (!base_jobs.contains(next_job.id)) diff.presence.push_back({next_job.id, Verdict::kAdded});
   return diff;
 }
 
-std::string formatDiff(const DiffReport& diff) {
+std::string formatDiff(const DiffReport& diff, bool verbose) {
   std::string out = fmt::format("base {}\nnew  {}\n", diff.base_run, diff.next_run);
-  for (Verdict verdict :
-       {Verdict::kRegressed, Verdict::kMissing, Verdict::kImproved, Verdict::kAdded})
+  for (Verdict verdict : {Verdict::kRegressed, Verdict::kMissing, Verdict::kImproved,
+                          Verdict::kUnconfirmed, Verdict::kAdded})
     appendLines(diff, verdict, out);
+  if (verbose)
+    for (const TimingChange& c : diff.timings)
+      if (c.verdict == Verdict::kUnchanged) out += formatTimingLine(c) + "\n";
+  out += unchangedTimingsLine(diff);
   const std::size_t unchanged = countVerdict(diff.metrics, Verdict::kUnchanged) +
                                 countVerdict(diff.timings, Verdict::kUnchanged);
-  out += fmt::format("{}, {}, {} unchanged, {} added", plural(diff.regressions(), "regression"),
-                     plural(diff.improvements(), "improvement"), unchanged,
+  out += fmt::format("{}, {}, {} unconfirmed{}, {} unchanged, {} added",
+                     plural(diff.regressions(), "regression"),
+                     plural(diff.improvements(), "improvement"), diff.unconfirmed(),
+                     diff.strict_timing ? " (slowdowns counted: --strict-timing)" : "", unchanged,
                      countVerdict(diff.presence, Verdict::kAdded));
   // Jobs a partial run left out are counted, not listed: a bisect step may leave out hundreds.
   if (const std::size_t not_run = countVerdict(diff.presence, Verdict::kNotRun))
     out += fmt::format(", {} not run (the new run ran part of its suite)", not_run);
-  out += "\n";
+  out += fmt::format("; timing false-regression rate at most {:g} per diff\n",
+                     diff.timing_significance);
   return out;
 }
 
@@ -223,11 +233,21 @@ json diffJson(const DiffReport& diff) {
                        {"base_median_ms", numberToJson(c.base_median_ms)},
                        {"new_median_ms", numberToJson(c.next_median_ms)},
                        {"relative_change", numberToJson(c.relative_change)},
+                       {"evidence", evidenceName(c.evidence)},
+                       {"base_samples", c.base_samples},
+                       {"new_samples", c.next_samples},
+                       {"history_runs", c.history_runs},
+                       {"run_to_run_spread", numberToJson(c.run_to_run_spread)},
                        {"p_value", numberToJson(c.p_value)},
+                       {"significance", numberToJson(c.significance)},
+                       {"detectable_change", numberToJson(c.detectable_change)},
+                       {"pairs_base_ms", c.pairs_base_ms},
+                       {"pairs_new_ms", c.pairs_next_ms},
                        {"tolerance",
                         {{"relative", numberToJson(c.tolerance.relative)},
                          {"significance", numberToJson(c.tolerance.significance)}}},
-                       {"verdict", verdictName(c.verdict)}});
+                       {"verdict", verdictName(c.verdict)},
+                       {"explanation", c.explanation()}});
   json jobs = json::array();
   for (const JobPresence& p : diff.presence)
     jobs.push_back({{"job", p.job}, {"verdict", verdictName(p.verdict)}});
@@ -235,6 +255,10 @@ json diffJson(const DiffReport& diff) {
           {"new_run", diff.next_run},
           {"regressions", diff.regressions()},
           {"improvements", diff.improvements()},
+          {"unconfirmed", diff.unconfirmed()},
+          {"strict_timing", diff.strict_timing},
+          {"timing_significance", numberToJson(diff.timing_significance)},
+          {"timing_comparison_significance", numberToJson(diff.timing_comparison_significance)},
           {"metrics", std::move(metrics)},
           {"timings", std::move(timings)},
           {"jobs", std::move(jobs)}};

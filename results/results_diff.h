@@ -1,9 +1,12 @@
 // `gibench diff`: what changed between two runs, and whether it is a regression or noise.
-// Metrics are judged by the new run's tolerances (results/results.h: Tolerance), frame times by
-// the relative threshold and the Mann–Whitney U test of the per-frame samples (TimingTolerance).
+// Metrics are judged by the new run's tolerances (results/results.h: Tolerance): deterministic
+// renders make every metric exact, so a change beyond tolerance is real. Frame times are judged
+// by results/timing_verdict.h: the tolerance and the best evidence of noise at hand.
 #pragma once
 
 #include "results/results.h"
+#include "results/timing_history.h"
+#include "results/timing_verdict.h"
 
 #include <nlohmann/json.hpp>
 
@@ -12,18 +15,6 @@
 #include <vector>
 
 namespace gib::results {
-
-enum class Verdict {
-  kUnchanged,  // within tolerance (or bit-identical)
-  kImproved,   // beyond tolerance, for the better
-  kRegressed,  // beyond tolerance, for the worse (or became non-finite)
-  kMissing,    // in the base run, not in the new one: counted as a regression
-  kAdded,      // in the new run only: reported, not judged
-  // In the base run, not in a new run that ran only part of its suite (`gibench run --only`,
-  // RunInfo::complete false, as a bisect step does): reported, not judged.
-  kNotRun,
-};
-const char* verdictName(Verdict verdict);  // "unchanged", "improved", …
 
 struct MetricChange {
   std::string job;
@@ -35,18 +26,17 @@ struct MetricChange {
   Verdict verdict = Verdict::kUnchanged;
 };
 
-struct TimingChange {
-  std::string job;
-  double base_median_ms = 0, next_median_ms = 0;
-  double relative_change = 0;
-  double p_value = 1;  // Mann–Whitney U, two-sided; 1 when either side has no samples
-  TimingTolerance tolerance;
-  Verdict verdict = Verdict::kUnchanged;
-};
-
 struct JobPresence {
   std::string job;
   Verdict verdict;  // kMissing, kAdded or kNotRun
+};
+
+struct DiffOptions {
+  // Per-run medians of comparable earlier runs, by job id (results/timing_history.h); empty:
+  // timings are judged within the two runs alone.
+  TimingHistory history;
+  // Count an unconfirmed slowdown as a regression (a bisect that must not miss one).
+  bool strict_timing = false;
 };
 
 struct DiffReport {
@@ -54,15 +44,21 @@ struct DiffReport {
   std::vector<MetricChange> metrics;
   std::vector<TimingChange> timings;
   std::vector<JobPresence> presence;
-  std::size_t regressions() const;
+  bool strict_timing = false;
+  // The suite's timing significance and the per-comparison one after the Šidák correction over
+  // `timings`: the chance that the diff calls a false timing regression is at most the first.
+  double timing_significance = 0, timing_comparison_significance = 0;
+  std::size_t regressions() const;  // metrics, timings, missing jobs (and unconfirmed if strict)
   std::size_t improvements() const;
+  std::size_t unconfirmed() const;
 };
 
-DiffReport diffResults(const RunResults& base, const RunResults& next);
+DiffReport diffResults(const RunResults& base, const RunResults& next,
+                       const DiffOptions& options = {});
 
 // For people: the regressions and improvements (unchanged values counted, not listed), one line
 // per change, and a summary line.
-std::string formatDiff(const DiffReport& diff);
+std::string formatDiff(const DiffReport& diff, bool verbose = false);
 nlohmann::ordered_json diffJson(const DiffReport& diff);
 
 }  // namespace gib::results

@@ -52,6 +52,13 @@ const std::array<JsonMember<RunInfo>, 22> kRunInfoMembers = {{
     jsonMember<&RunInfo::complete>("complete"),
 }};
 
+const std::array<JsonMember<RunConditions>, 4> kConditionsMembers = {{
+    jsonMember<&RunConditions::load_before>("load_before"),
+    jsonMember<&RunConditions::load_after>("load_after"),
+    jsonMember<&RunConditions::governor>("governor"),
+    jsonMember<&RunConditions::other_gibench>("other_gibench"),
+}};
+
 const std::array<JsonMember<Tolerance>, 2> kToleranceMembers = {{
     jsonMember<&Tolerance::absolute>("absolute"),
     jsonMember<&Tolerance::relative>("relative"),
@@ -291,6 +298,12 @@ JobResult readJob(const JsonField& f) {
   // Added after version 1, so optional (docs/results-schema.md, compatibility).
   if (auto timings = f.find("iteration_timings")) j.iteration_timings = readPassTimings(*timings);
   if (auto statistics = f.find("statistics")) j.statistics = readNamedValues(*statistics);
+  if (auto file = f.find("scene_file")) j.scene_file = file->asString();
+  if (auto repeats = f.find("repeats"))
+    repeats->forEachElement(
+        [&](const JsonField& repeat) { j.repeats.push_back(readPassTimings(repeat)); });
+  if (auto conditions = f.find("conditions"))
+    j.conditions = membersFromJson(*conditions, kConditionsMembers);
   if (auto images = f.find("auxiliary_images"))
     images->forEachElement([&](const JsonField& image) {
       j.auxiliary_images.push_back(membersFromJson(image, kAuxiliaryImageMembers));
@@ -384,6 +397,11 @@ json jobToJson(const JobResult& j) {
   out["outputs"] = membersToJson(j.outputs, kOutputsMembers);
   out["iteration_timings"] = j.iteration_timings ? passTimingsToJson(*j.iteration_timings) : json();
   out["statistics"] = namedValuesToJson(j.statistics);
+  out["scene_file"] = j.scene_file;
+  json repeats = json::array();
+  for (const metrics::PassTimings& repeat : j.repeats) repeats.push_back(passTimingsToJson(repeat));
+  out["repeats"] = std::move(repeats);
+  out["conditions"] = membersToJson(j.conditions, kConditionsMembers);
   json images = json::array();
   for (const AuxiliaryImageOutput& image : j.auxiliary_images)
     images.push_back(membersToJson(image, kAuxiliaryImageMembers));
@@ -398,9 +416,11 @@ json resultsToJson(const RunResults& results) {
   for (const ChartSpec& c : results.charts) charts.push_back(membersToJson(c, kChartMembers));
   json jobs = json::array();
   for (const JobResult& j : results.jobs) jobs.push_back(jobToJson(j));
+  json run = membersToJson(results.run, kRunInfoMembers);
+  run["conditions"] = membersToJson(results.run.conditions, kConditionsMembers);
   return {{"schema", kResultsSchemaName},
           {"schema_version", kResultsSchemaVersion},
-          {"run", membersToJson(results.run, kRunInfoMembers)},
+          {"run", std::move(run)},
           {"tolerances", tolerancesToJson(results.tolerances)},
           {"primary_metric", results.primary_metric},
           {"paper", std::move(paper)},
@@ -414,6 +434,8 @@ RunResults resultsFromJson(const json& document, const std::string& source) {
   RunResults results;
   results.schema_version = kResultsSchemaVersion;
   results.run = membersFromJson(top.at("run"), kRunInfoMembers);
+  if (auto conditions = top.at("run").find("conditions"))
+    results.run.conditions = membersFromJson(*conditions, kConditionsMembers);
   results.tolerances = readTolerances(top.at("tolerances"));
   results.primary_metric = top.at("primary_metric").asString();
   top.at("paper").forEachElement(
@@ -446,6 +468,12 @@ JobResult readJobFile(const fs::path& path) {
   const JsonField top(document, source, kResultsFix);
   checkSchema(top, kJobSchemaName);
   return readJob(top);
+}
+
+metrics::PassTimings readPassTimingsFile(const fs::path& path) {
+  const json document = parseFile(path);
+  const std::string source = path.string();  // outlives the fields, which refer to it
+  return readPassTimings(JsonField(document, source, kResultsFix));
 }
 
 void writeResultsFile(const fs::path& path, const RunResults& results) {

@@ -18,6 +18,9 @@ nlohmann::ordered_json jobToJson(const JobResult& job);
 // by `gibench render --timings-json`: clock, frame counts and each pass with its summary and
 // per-frame samples.
 nlohmann::ordered_json passTimingsToJson(const metrics::PassTimings& timings);
+// A timings file of that form (a job's timings.json, `gibench render --timings-json`); throws
+// gib::InputError naming the file and the field for a missing or damaged one.
+metrics::PassTimings readPassTimingsFile(const std::filesystem::path& path);
 
 // Throw gib::InputError "<source>: <field path>: <problem>; <fix>" for a missing or mistyped
 // field, and for a schema name or version this build cannot read. Ordered JSON: metrics and

@@ -301,8 +301,8 @@ std::string jobHash(const PreparedJob& p) {
   if (p.parameters)
     for (const auto& [key, value] : p.parameters->canonical()) hasher.addString(key + "=" + value);
   const RunSettings& s = job.settings;
-  for (int value : {s.frames, s.warmup, s.reference.spp, s.reference.min_bounces.value_or(-1),
-                    s.reference.max_bounces.value_or(-1)})
+  for (int value : {s.frames, s.warmup, s.repeats, s.reference.spp,
+                    s.reference.min_bounces.value_or(-1), s.reference.max_bounces.value_or(-1)})
     hasher.addU64(std::uint64_t(std::int64_t(value)));
   hasher.addU64(s.reference.seed);
   for (const std::string& metric : s.metrics) hasher.addString(metric);
@@ -354,6 +354,7 @@ results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
   result.slug = job.slug;
   result.case_name = job.case_name;
   result.scene = job.scene.name;
+  if (!job.scene.builtin()) result.scene_file = job.scene.file.string();
   result.scene_hash = p.scene_hash;
   result.technique = job.technique;
   if (p.parameters) result.parameters = p.parameters->canonical();
@@ -369,6 +370,24 @@ results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
     runTechniqueJob(p, env, job_dir, result, gl);
   result.seconds = secondsSince(start);
   return result;
+}
+
+metrics::PassTimings repeatTechniqueJob(const PreparedJob& p, const JobEnvironment& env) {
+  rt::TechniqueRunSettings settings = techniqueSettings(p, env);
+  settings.capture_after.clear();  // the convergence series is the first run's
+  return metrics::summarizeProfile(
+      rt::runTechnique(p.scene, *p.technique, *p.parameters, settings).profile);
+}
+
+void recordRepeats(results::JobResult& result, std::vector<metrics::PassTimings> repeats) {
+  if (repeats.size() < 2) return;
+  std::vector<std::size_t> order(repeats.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return repeats[a].root().reported.median < repeats[b].root().reported.median;
+  });
+  result.timings = repeats[order[(order.size() - 1) / 2]];
+  result.repeats = std::move(repeats);
 }
 
 }  // namespace gib::suites

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/parameters.h"
+#include "metrics/pass_timing_summary.h"
 #include "realtime/gl/context.h"
 #include "realtime/technique.h"
 #include "reference/reference_store.h"
@@ -48,5 +49,13 @@ struct JobEnvironment {
 results::JobResult executeJob(const PreparedJob& job, const JobEnvironment& environment,
                               const std::filesystem::path& job_dir,
                               rt::gl::GlIdentity* gl = nullptr);
+
+// One more run of a technique job (`repeats` > 1): a fresh GL context and the job's frames, its
+// timings alone (the images and metrics of the first run stand: renders are deterministic).
+metrics::PassTimings repeatTechniqueJob(const PreparedJob& job, const JobEnvironment& environment);
+
+// Puts every repeat's timings into `result` (JobResult::repeats, in run order) and makes
+// `result.timings` the repeat of the median frame time (the lower one of an even count).
+void recordRepeats(results::JobResult& result, std::vector<metrics::PassTimings> repeats);
 
 }  // namespace gib::suites

@@ -53,6 +53,9 @@ struct RunSettings {
   std::optional<int> width, height;  // absent: the scene's default size
   int frames = 8;                    // measured frames of a technique job
   int warmup = 2;                    // frames rendered before them
+  // Whole runs of a technique job (each with a fresh GL context), interleaved with the other
+  // jobs' repeats: timing comparisons then test per-repeat medians, not frames of one run.
+  int repeats = 1;
   std::vector<std::string> metrics;  // metric registry names, catalogue order
   ReferenceSettings reference;
   // Optional series, strictly increasing: spp of a reference case, iterations of an iterative

@@ -37,9 +37,11 @@ constexpr std::size_t kMaxJobsPerCase = 10000;  // a sweep beyond this is surely
 
 // Enough for any convergence study; a typo of 10^7 would run for days.
 constexpr long long kMaxIterations = 100000;
+// Whole runs of one technique job; more belong in a benchmark than in a suite.
+constexpr long long kMaxRepeats = 100;
 
-const std::vector<std::string> kSettingKeys = {"width",  "height", "metrics",
-                                               "frames", "warmup", "reference"};
+const std::vector<std::string> kSettingKeys = {"width",  "height",  "metrics",  "frames",
+                                               "warmup", "repeats", "reference"};
 const std::vector<std::string> kReferenceKeys = {"spp", "seed", "min_bounces", "max_bounces"};
 
 bool isSafeName(std::string_view name) {
@@ -147,6 +149,8 @@ void readSettings(const TomlTableReader& t, Settings& s) {
     s.run.frames = static_cast<int>(t.integer(*n, "frames", 1, kMaxFrames, "8"));
   if (const toml::node* n = t.find("warmup"))
     s.run.warmup = static_cast<int>(t.integer(*n, "warmup", 0, kMaxFrames, "2"));
+  if (const toml::node* n = t.find("repeats"))
+    s.run.repeats = static_cast<int>(t.integer(*n, "repeats", 1, kMaxRepeats, "3"));
   if (const toml::node* n = t.find("reference")) readReference(t, *n, s);
 }
 

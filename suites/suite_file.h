@@ -10,6 +10,8 @@
 //                                         # a string may hold a comma-separated list; default "all"
 //   frames = 8                            # measured frames per technique job, >= 1; default 8
 //   warmup = 2                            # frames rendered before them, >= 0; default 2
+//   repeats = 3                           # whole runs of a technique job (fresh GL context each,
+//                                         # interleaved with other jobs'), 1 to 100; default 1
 //
 //   [defaults.reference]                  # the reference each case is measured against
 //   spp = 1024                            # >= 1; default 1024
@@ -36,8 +38,9 @@
 // [x, y, z], and a sweep of vectors an array of those. Every value is checked against the
 // technique's or scene's parameter table when the file is read; a scene file is only checked to
 // exist here (it is loaded, with its own errors, when the suite runs). A reference case takes no
-// `set`, frames and warmup do not apply to it, and its checkpoints (spp counts) are at most its
-// reference spp. A case expanding into more than 10 000 jobs is refused as a likely mistake.
+// `set`, frames, warmup and repeats do not apply to it, and its checkpoints (spp counts) are at
+// most its reference spp. A case expanding into more than 10 000 jobs is refused as a likely
+// mistake.
 #pragma once
 
 #include "suites/suite.h"

@@ -10,6 +10,7 @@
 #include "results/results_csv.h"
 #include "results/results_json.h"
 #include "suites/job_execution.h"
+#include "suites/run_conditions.h"
 #include "suites/run_directory.h"
 #include "suites/run_environment.h"
 
@@ -118,27 +119,47 @@ std::string summaryOf(const results::JobResult& job, const std::string& metric) 
   return text;
 }
 
-// Runs the pending jobs on `workers` threads; the first failure stops the hand-out of new jobs
-// and is rethrown once the running ones have ended (their results are kept for a resume).
+// Runs the pending jobs on `workers` threads; the first failure stops the hand-out of new tasks
+// and is rethrown once the running ones have ended (the finished jobs' results are kept for a
+// resume). A job of `repeats` > 1 is several tasks: its first run (images, metrics, timings) and
+// each further timed run. Repeats are interleaved across jobs (every job's first run, then every
+// job's second, …), so that a drift of the machine spreads over all jobs rather than one; a job is
+// recorded when its last task ends.
 class JobScheduler {
  public:
   JobScheduler(const std::vector<PreparedJob>& jobs, const RunDirectory& dir,
                const RunOptions& options, ref::ReferenceStore& store,
                std::vector<std::optional<results::JobResult>>& results)
-      : jobs_(jobs), dir_(dir), options_(options), store_(store), results_(results) {}
+      : jobs_(jobs),
+        dir_(dir),
+        options_(options),
+        store_(store),
+        results_(results),
+        states_(jobs.size()) {}
 
   void run(const std::vector<std::size_t>& pending) {
+    std::vector<Task> tasks;
+    int most = 1;
+    for (std::size_t index : pending) {
+      states_[index].timings.resize(std::size_t(repeatsOf(index)));
+      states_[index].remaining = repeatsOf(index);
+      most = std::max(most, repeatsOf(index));
+    }
+    for (int repeat = 0; repeat < most; ++repeat)
+      for (std::size_t index : pending)
+        if (repeat < repeatsOf(index)) tasks.push_back({index, repeat});
+
     std::atomic<std::size_t> next{0};
     std::exception_ptr failure;
     std::mutex failure_mutex;
     auto worker = [&] {
-      for (std::size_t k; (k = next.fetch_add(1)) < pending.size();) {
+      for (std::size_t k; (k = next.fetch_add(1)) < tasks.size();) {
         {
           std::lock_guard lock(failure_mutex);
           if (failure) return;
         }
         try {
-          runOne(pending[k]);
+          runTask(tasks[k]);
         } catch (...) {
           std::lock_guard lock(failure_mutex);
           if (!failure) failure = std::current_exception();
@@ -146,7 +167,7 @@ class JobScheduler {
         }
       }
     };
-    const int count = std::max(1, std::min<int>(options_.parallel_jobs, int(pending.size())));
+    const int count = std::max(1, std::min<int>(options_.parallel_jobs, int(tasks.size())));
     std::vector<std::thread> threads;
     for (int i = 1; i < count; ++i) threads.emplace_back(worker);
     worker();
@@ -157,30 +178,94 @@ class JobScheduler {
   std::optional<rt::gl::GlIdentity> gl() const { return gl_; }
 
  private:
+  struct Task {
+    std::size_t job;
+    int repeat;  // 0: the full first run
+  };
+  // A job's progress over its tasks.
+  struct JobState {
+    std::optional<results::JobResult> result;                  // from the first run
+    std::vector<std::optional<metrics::PassTimings>> timings;  // of each repeat
+    int remaining = 0;
+    ConditionsSample before;
+    fs::path dir;
+  };
+
+  int repeatsOf(std::size_t index) const {
+    return jobs_[index].technique ? jobs_[index].job->settings.repeats : 1;
+  }
+
   void log(const std::string& line) {
     std::lock_guard lock(log_mutex_);
     fmt::print(options_.log, "{}\n", line);
     std::fflush(options_.log);
   }
 
-  void runOne(std::size_t index) {
-    const PreparedJob& job = jobs_[index];
-    const std::string prefix = fmt::format("[{}/{}] {}", index + 1, jobs_.size(), job.job->id);
-    log(prefix + ": started");
+  JobEnvironment environment(const std::string& prefix) {
     JobEnvironment env;
     env.store = &store_;
     env.run_dir = dir_.path();
     env.gl.device = options_.gl_device;
     env.gl.debug = rt::gl::debugOutputByDefault();
     env.progress = options_.progress && options_.parallel_jobs == 1;
-    env.note = [&](const std::string& note) { log(prefix + ": " + note); };
-    rt::gl::GlIdentity gl;
-    const fs::path job_dir = dir_.prepareJob(*job.job);
-    results::JobResult result = executeJob(job, env, job_dir, &gl);
+    env.note = [this, prefix](const std::string& note) { log(prefix + ": " + note); };
+    return env;
+  }
+
+  void runTask(const Task& task) {
+    const PreparedJob& job = jobs_[task.job];
+    const int repeats = repeatsOf(task.job);
+    std::string prefix = fmt::format("[{}/{}] {}", task.job + 1, jobs_.size(), job.job->id);
+    if (repeats > 1) prefix += fmt::format(" (run {}/{})", task.repeat + 1, repeats);
+    JobState& state = states_[task.job];
+    const JobEnvironment env = environment(prefix);
+    if (task.repeat == 0) {
+      {
+        std::lock_guard lock(state_mutex_);
+        state.before = sampleConditions();
+      }
+      log(prefix + ": started");
+      rt::gl::GlIdentity gl;
+      const fs::path job_dir = dir_.prepareJob(*job.job);
+      results::JobResult result = executeJob(job, env, job_dir, &gl);
+      std::lock_guard lock(state_mutex_);
+      if (job.technique && !gl_) gl_ = gl;
+      if (result.timings) state.timings[0] = result.timings;
+      state.result = std::move(result);
+      state.dir = job_dir;
+    } else {
+      log(prefix + ": timing again");
+      metrics::PassTimings timings = repeatTechniqueJob(job, env);
+      std::lock_guard lock(state_mutex_);
+      state.timings[std::size_t(task.repeat)] = std::move(timings);
+    }
+    bool last = false;
+    {
+      std::lock_guard lock(state_mutex_);
+      last = --state.remaining == 0;
+    }
+    if (last) finish(task.job);
+  }
+
+  // Every task of the job has ended: its repeats and conditions join the first run's result,
+  // which is recorded (the resume point) and logged.
+  void finish(std::size_t index) {
+    const PreparedJob& job = jobs_[index];
+    JobState& state = states_[index];
+    results::JobResult result = std::move(*state.result);
+    if (state.timings.size() > 1) {
+      std::vector<metrics::PassTimings> repeats;
+      for (std::optional<metrics::PassTimings>& timings : state.timings)
+        repeats.push_back(std::move(*timings));
+      recordRepeats(result, std::move(repeats));
+      image::writeTextFile(dir_.path() / result.outputs.timings_json,
+                           results::passTimingsToJson(*result.timings).dump(2) + "\n");
+    }
+    result.conditions = conditionsBetween(state.before, sampleConditions());
     dir_.recordJob(*job.job, result);
-    log(prefix + ": " + summaryOf(result, primaryMetric({result})));
-    std::lock_guard lock(log_mutex_);
-    if (job.technique && !gl_) gl_ = gl;
+    log(fmt::format("[{}/{}] {}: {}", index + 1, jobs_.size(), job.job->id,
+                    summaryOf(result, primaryMetric({result}))));
+    std::lock_guard lock(state_mutex_);
     results_[index] = std::move(result);
   }
 
@@ -189,7 +274,8 @@ class JobScheduler {
   const RunOptions& options_;
   ref::ReferenceStore& store_;
   std::vector<std::optional<results::JobResult>>& results_;
-  std::mutex log_mutex_;
+  std::vector<JobState> states_;
+  std::mutex log_mutex_, state_mutex_;
   std::optional<rt::gl::GlIdentity> gl_;
 };
 
@@ -220,6 +306,7 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   for (const Job& job : jobs) prepared.push_back(prepareJob(job));
   checkResources(options, prepared);
 
+  const ConditionsSample before = sampleConditions();
   results::RunInfo info = describeEnvironment();
   info.started = utcTimestamp();
   info.id = newRunId(suite.name, info);
@@ -272,6 +359,7 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   info.store = options.store_root.string();
   info.complete = options.only.empty();
   info.finished = utcTimestamp();
+  info.conditions = conditionsBetween(before, sampleConditions());
   run.run = info;
   run.tolerances = suite.tolerances;
   for (const results::PaperValue& value : suite.paper)

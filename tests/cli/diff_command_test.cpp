@@ -51,7 +51,7 @@ TEST_F(DiffCommandTest, ExitsZeroWhenNothingRegressed) {
 TEST_F(DiffCommandTest, ExitsOneAndNamesTheRegression) {
   CommandResult r = diff({file("base.json"), file("worse.json")});
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_THAT(r.out, HasSubstr("regressed  cornell-direct  relmse  0.02 -> 0.022  +10.0%"));
+  EXPECT_THAT(r.out, HasSubstr("regressed   cornell-direct  relmse  0.02 -> 0.022  +10.0%"));
   EXPECT_THAT(r.out, HasSubstr("1 regression,"));
   // The other way round it is an improvement.
   EXPECT_EQ(diff({file("worse.json"), file("base.json")}).exit_code, 0);

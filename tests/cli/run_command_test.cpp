@@ -300,3 +300,79 @@ TEST_F(RunCommandTest, ListSuitesShowsTheShippedOnes) {
 
 }  // namespace
 }  // namespace gib
+
+namespace gib {
+namespace {
+
+// `repeats`: each technique job timed that many times with a fresh context, every repeat kept,
+// the job's timings the repeat of the median; reference jobs run once; the machine's conditions
+// recorded for the run and each job.
+TEST_F(RunCommandTest, RepeatsTimeEachTechniqueJobSeveralTimes) {
+  std::string suite_text = kTinySuite;
+  suite_text.replace(suite_text.find("warmup = 0"), 10, "warmup = 0\nrepeats = 3");
+  writeFile(suite(), suite_text);
+  const fs::path out = dir_ / "out";
+  const test::CommandResult r = run(out, {"--no-history"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("(run 3/3): timing again"));
+  const results::RunResults results = results::readResultsFile(out);
+  EXPECT_GE(results.run.conditions.load_before, 0.0);
+  EXPECT_GE(results.run.conditions.other_gibench, 0);
+  for (const results::JobResult& job : results.jobs) {
+    EXPECT_GE(job.conditions.load_after, 0.0) << job.id;
+    if (job.technique == "reference") {
+      EXPECT_TRUE(job.repeats.empty());
+      continue;
+    }
+    ASSERT_EQ(job.repeats.size(), 3u) << job.id;
+    const std::vector<double> medians = job.repeatMediansMs();
+    ASSERT_EQ(medians.size(), 3u);
+    std::vector<double> sorted = medians;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(job.frameMedianMs(), sorted[1]);  // the repeat of the median is the one shown
+    EXPECT_EQ(*job.runMedianMs(), sorted[1]);
+  }
+  // Repeats are part of what defines a job: a resume with another count runs them again.
+  writeFile(suite(), kTinySuite);
+  EXPECT_THAT(run(out, {"--no-history"}).err, Not(HasSubstr("finished by an earlier attempt")));
+}
+
+TEST_F(RunCommandTest, RepeatsOutOfRangeAreRefused) {
+  std::string suite_text = kTinySuite;
+  suite_text.replace(suite_text.find("warmup = 0"), 10, "warmup = 0\nrepeats = 0");
+  writeFile(suite(), suite_text);
+  const test::CommandResult r = run(dir_ / "out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("repeats"));
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// `gibench diff --confirm` between two runs of one build: each timed job rendered A B A B … by
+// the build, the verdicts resting on the interleaved pairs, and a build that cannot be found
+// named as the fix.
+TEST_F(RunCommandTest, DiffConfirmRendersEachBuildAlternately) {
+  ASSERT_EQ(run(dir_ / "a", {"--no-history"}).exit_code, 0);
+  ASSERT_EQ(run(dir_ / "b", {"--no-history"}).exit_code, 0);
+  const test::CommandResult r =
+      test::runGibench({"diff", (dir_ / "a").string(), (dir_ / "b").string(), "--confirm",
+                        "--pairs", "3", "--json", "--store", store().string()},
+                       dir_.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json diff = nlohmann::json::parse(r.out);
+  ASSERT_EQ(diff["timings"].size(), 2u);
+  for (const auto& timing : diff["timings"]) {
+    if (timing["evidence"] != "interleaved A/B") continue;  // changes within half the tolerance
+    EXPECT_EQ(timing["pairs_base_ms"].size(), 3u);
+    EXPECT_EQ(timing["pairs_new_ms"].size(), 3u);
+  }
+  const test::CommandResult missing =
+      test::runGibench({"diff", (dir_ / "a").string(), (dir_ / "b").string(), "--confirm",
+                        "--base-gibench", (dir_ / "nowhere").string(), "--store", store().string()},
+                       dir_.path());
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.err, HasSubstr("--base-gibench"));
+  EXPECT_EQ(test::countLines(missing.err), 1) << missing.err;
+}
+
+}  // namespace
+}  // namespace gib

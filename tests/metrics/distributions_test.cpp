@@ -34,3 +34,31 @@ TEST(Distributions, SidakCorrectionKeepsTheFamilyRate) {
 
 }  // namespace
 }  // namespace gib::metrics
+
+namespace gib::metrics {
+namespace {
+
+TEST(Distributions, IncompleteBetaMatchesBinomialTails) {
+  // For integers, I_x(a, b) = P(Binomial(a + b − 1, x) ≥ a).
+  EXPECT_NEAR(regularizedBetaI(2, 3, 0.5), 11.0 / 16.0, 1e-14);
+  EXPECT_NEAR(regularizedBetaI(1, 1, 0.3), 0.3, 1e-14);
+  EXPECT_NEAR(regularizedBetaI(5, 2, 0.9), 0.885735, 1e-6);
+  EXPECT_EQ(regularizedBetaI(3, 4, 0.0), 0.0);
+  EXPECT_EQ(regularizedBetaI(3, 4, 1.0), 1.0);
+  EXPECT_THROW(regularizedBetaI(0, 1, 0.5), std::domain_error);
+}
+
+TEST(Distributions, StudentTMatchesTablesAndTheNormalLimit) {
+  // Two-sided 5% and 1% critical values of the usual tables.
+  EXPECT_NEAR(studentTQuantile(0.975, 1), 12.7062, 1e-4);
+  EXPECT_NEAR(studentTQuantile(0.975, 10), 2.2281, 1e-4);
+  EXPECT_NEAR(studentTQuantile(0.995, 5), 4.0321, 1e-4);
+  EXPECT_NEAR(studentTQuantile(0.975, 1e7), normalQuantile(0.975), 1e-5);
+  EXPECT_NEAR(studentTCdf(0.0, 3), 0.5, 1e-15);
+  EXPECT_NEAR(studentTCdf(-2.0, 4) + studentTCdf(2.0, 4), 1.0, 1e-14);
+  for (double p : {0.01, 0.2, 0.5, 0.9, 0.999})
+    EXPECT_NEAR(studentTCdf(studentTQuantile(p, 7), 7), p, 1e-12) << p;
+}
+
+}  // namespace
+}  // namespace gib::metrics

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace gib::metrics {
@@ -26,27 +29,109 @@ TEST(TimingStatistics, QuantilesInterpolateBetweenOrderStatistics) {
   EXPECT_THROW(summarizeTimings(std::vector<double>{}), std::invalid_argument);
 }
 
-TEST(MannWhitney, MatchesTheNormalApproximationOfATextbookCase) {
-  // Completely separated samples of five: U = 0, z = (12.5 − 0.5)/sqrt(25·11/12) = 2.5067,
-  // two-sided p = 0.01219 (R: wilcox.test(a, b, exact = FALSE, correct = TRUE)).
-  const std::vector<double> a = {1, 2, 3, 4, 5}, b = {6, 7, 8, 9, 10};
-  MannWhitneyResult r = mannWhitneyU(a, b);
-  EXPECT_EQ(r.u, 0);
-  EXPECT_NEAR(r.p_value, 0.01219, 1e-4);
+}  // namespace
+}  // namespace gib::metrics
+
+namespace gib::metrics {
+namespace {
+
+// Error rates of the timing tests under simulated noise: log-normal run-to-run noise (ln time
+// normal, as the tests assume), a fixed seed, 20 000 trials. A false-positive rate is accepted
+// when it lies under significance + 4 binomial standard deviations (a fair test fails this with
+// probability 3e-5); a power when it is at least the stated 95% less 4 standard deviations.
+constexpr int kTrials = 20000;
+constexpr double kSignificance = 0.01;
+
+double binomialBound(double rate) {
+  return rate + 4.0 * std::sqrt(rate * (1 - rate) / kTrials);
 }
 
-TEST(MannWhitney, SeesAShiftButNotReordering) {
-  std::vector<double> a, b, shuffled;
-  for (int i = 0; i < 20; ++i) {
-    a.push_back(10 + (i * 7) % 20 * 0.1);
-    b.push_back(10.5 + (i * 3) % 20 * 0.1);
+struct NoiseSource {
+  explicit NoiseSource(std::uint64_t seed) : generator(seed) {}
+  double lognormal(double median, double sigma) {
+    return median * std::exp(sigma * normal(generator));
   }
-  EXPECT_LT(mannWhitneyU(a, b).p_value, 0.05);
-  shuffled.assign(a.rbegin(), a.rend());
-  EXPECT_GT(mannWhitneyU(a, shuffled).p_value, 0.9);
-  // All values tied: no evidence either way.
-  const std::vector<double> same = {1, 1, 1};
-  EXPECT_EQ(mannWhitneyU(same, same).p_value, 1.0);
+  std::mt19937_64 generator;
+  std::normal_distribution<double> normal{0.0, 1.0};
+};
+
+TEST(TimingTests, TheRunToRunRuleFalselyRejectsAtItsSignificance) {
+  NoiseSource noise(1);
+  int rejected = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    std::vector<double> history;
+    for (int i = 0; i < 8; ++i) history.push_back(noise.lognormal(10, 0.08));
+    const double base = noise.lognormal(10, 0.08), next = noise.lognormal(10, 0.08);
+    rejected +=
+        testAgainstRunToRunSpread(base, next, history, kSignificance).p_value < kSignificance;
+  }
+  EXPECT_LT(double(rejected) / kTrials, binomialBound(kSignificance)) << rejected;
+  EXPECT_GT(rejected, 0);  // the test is not simply blind
+}
+
+TEST(TimingTests, TheRunToRunRuleDetectsItsStatedDetectableChange) {
+  NoiseSource noise(2);
+  std::vector<double> history;
+  for (int i = 0; i < 10; ++i) history.push_back(noise.lognormal(10, 0.05));
+  const double detectable =
+      testAgainstRunToRunSpread(10, 10, history, kSignificance).detectable_change;
+  // Runs drawn around base and around base·(1 + detectable): detected at about 95%.
+  int detected = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const double base = noise.lognormal(10, 0.05);
+    const double next = noise.lognormal(10 * (1 + detectable), 0.05);
+    detected +=
+        testAgainstRunToRunSpread(base, next, history, kSignificance).p_value < kSignificance;
+  }
+  // The stated power holds for the noise the history estimated; this history's estimate is near
+  // the truth, so the rate is near 95% (within the estimate's own error of some percent).
+  EXPECT_GT(double(detected) / kTrials, 0.85) << detected;
+}
+
+// Interleaved A/B pairs: the machine drifts by 30% between pairs, far more than the pairs' own 3%
+// noise; the paired test must neither flag it nor miss a 25% slowdown under it.
+TEST(TimingTests, InterleavedPairsIgnoreDriftAndCatchASlowdown) {
+  NoiseSource noise(3);
+  int false_alarms = 0, detected = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    std::vector<double> a, b, slow;
+    for (int i = 0; i < 6; ++i) {
+      const double machine = noise.lognormal(10, 0.3);
+      a.push_back(noise.lognormal(machine, 0.03));
+      b.push_back(noise.lognormal(machine, 0.03));
+      slow.push_back(noise.lognormal(1.25 * machine, 0.03));
+    }
+    false_alarms += testInterleavedPairs(a, b, kSignificance).p_value < kSignificance;
+    detected += testInterleavedPairs(a, slow, kSignificance).p_value < kSignificance;
+  }
+  EXPECT_LT(double(false_alarms) / kTrials, binomialBound(kSignificance)) << false_alarms;
+  EXPECT_GT(double(detected) / kTrials, 0.99) << detected;
+}
+
+// Frames of two runs see only their own noise: with a drift between the runs they reject far
+// more often than their significance, which is why the diff never takes them as proof.
+TEST(TimingTests, FramesAloneMistakeDriftForAChange) {
+  NoiseSource noise(4);
+  int rejected = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<double> a, b;
+    const double run_a = noise.lognormal(10, 0.1), run_b = noise.lognormal(10, 0.1);
+    for (int i = 0; i < 16; ++i) {
+      a.push_back(noise.lognormal(run_a, 0.02));
+      b.push_back(noise.lognormal(run_b, 0.02));
+    }
+    rejected += testWithinRuns(a, b, kSignificance).p_value < kSignificance;
+  }
+  EXPECT_GT(rejected, 2000 / 2);  // most of them, at a nominal 1%
+}
+
+TEST(TimingTests, RefuseTooFewSamplesAndBadTimes) {
+  const std::vector<double> one = {1.0}, two = {1.0, 2.0}, bad = {1.0, -2.0};
+  EXPECT_THROW(testAgainstRunToRunSpread(1, 2, one, kSignificance), std::invalid_argument);
+  EXPECT_THROW(testInterleavedPairs(one, one, kSignificance), std::invalid_argument);
+  EXPECT_THROW(testInterleavedPairs(two, one, kSignificance), std::invalid_argument);
+  EXPECT_THROW(testWithinRuns(two, bad, kSignificance), std::invalid_argument);
+  EXPECT_NEAR(runToRunSpread(std::vector<double>{10, 10, 10}), 0.0, 1e-15);
 }
 
 }  // namespace

@@ -54,21 +54,27 @@ TEST(ResultsJson, RoundTripsEveryFieldThroughAFile) {
 }
 
 TEST(ResultsJson, FilesFromBeforeTheFigureFieldsStillRead) {
-  // charts, iteration_timings, statistics and auxiliary_images came after version 1: a file
-  // without them reads with their defaults (docs/results-schema.md, compatibility).
+  // charts, iteration_timings, statistics, auxiliary_images, scene_file, repeats and conditions
+  // came after version 1: a file without them reads with their defaults (docs/results-schema.md,
+  // compatibility).
   RunResults results = test::richResults();
   nlohmann::ordered_json document = resultsToJson(results);
   document.erase("charts");
+  document["run"].erase("conditions");
   for (auto& job : document["jobs"]) {
-    job.erase("iteration_timings");
-    job.erase("statistics");
-    job.erase("auxiliary_images");
+    for (const char* key : {"iteration_timings", "statistics", "auxiliary_images", "scene_file",
+                            "repeats", "conditions"})
+      job.erase(key);
   }
   const RunResults back = resultsFromJson(document, "memory");
   EXPECT_TRUE(back.charts.empty());
+  EXPECT_EQ(back.run.conditions, RunConditions{});
   EXPECT_FALSE(back.jobs[0].iteration_timings.has_value());
   EXPECT_TRUE(back.jobs[0].statistics.empty());
   EXPECT_TRUE(back.jobs[0].auxiliary_images.empty());
+  EXPECT_TRUE(back.jobs[0].scene_file.empty());
+  EXPECT_TRUE(back.jobs[0].repeats.empty());
+  EXPECT_EQ(back.jobs[0].conditions, RunConditions{});
   EXPECT_EQ(back.jobs[0].metrics, results.jobs[0].metrics);
 }
 

@@ -86,6 +86,9 @@ results::RunResults richResults() {
   technique.statistics = {{"vertices", 1536}, {"atlas_texels", 12000}};
   technique.auxiliary_images = {
       {"atlas", "the radiance atlas", "jobs/a-atlas.exr", "jobs/a-atlas.png"}};
+  technique.repeats = {*technique.timings, frameTimings(noisyFrameTimes(2, 16, 4.3))};
+  technique.conditions = {0.25, 1.5, "performance", 0};
+  technique.scene_file = "/scenes/room.toml";
 
   results::JobResult reference;
   reference.id = "cornell-reference";
@@ -117,6 +120,7 @@ results::RunResults richResults() {
   run.run.parallel_jobs = 2;
   run.run.store = "/var/cache/gibench";
   run.run.complete = false;
+  run.run.conditions = {0.5, 2.25, "schedutil", 1};
   run.tolerances.metric_default = {0.001, 0.05};
   run.tolerances.metrics["flip_mean"] = {0.0, 0.02};
   run.tolerances.timing = {0.15, 0.001};

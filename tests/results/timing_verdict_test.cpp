@@ -1,0 +1,154 @@
+// How a timing change is judged by history and by interleaved A/B runs: the rules `gibench diff`
+// and a bisect rely on, on synthetic runs (deterministic: fixed seeds, fixed numbers).
+#include "results/timing_verdict.h"
+#include "results/results_diff.h"
+#include "results/timing_history.h"
+
+#include "support/synthetic_results.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace gib::results {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr double kSignificance = 0.01;
+
+JobResult timedJob(double median_ms, std::uint64_t seed) {
+  return test::syntheticJob("cornell-direct", {{"relmse", 0.01}},
+                            test::noisyFrameTimes(seed, 16, median_ms, 0.01));
+}
+
+// Per-run medians of `runs` runs whose spread between runs is `spread` (log-normal), around 10 ms.
+std::vector<double> history(int runs, double spread, std::uint64_t seed) {
+  std::mt19937_64 generator(seed);
+  std::normal_distribution<double> noise(0.0, spread);
+  std::vector<double> medians;
+  for (int i = 0; i < runs; ++i) medians.push_back(10.0 * std::exp(noise(generator)));
+  return medians;
+}
+
+TEST(TimingVerdict, AChangeOutsideTheRunToRunSpreadRegresses) {
+  const TimingChange change =
+      judgeTiming(timedJob(10.0, 1), timedJob(14.0, 2), history(10, 0.03, 3), {}, kSignificance);
+  EXPECT_EQ(change.evidence, TimingEvidence::kHistory);
+  EXPECT_EQ(change.history_runs, 10u);
+  EXPECT_NEAR(change.run_to_run_spread, 0.03, 0.015);
+  EXPECT_LT(change.p_value, kSignificance);
+  EXPECT_EQ(change.verdict, Verdict::kRegressed);
+  EXPECT_THAT(change.explanation(), HasSubstr("history of 10 comparable runs"));
+}
+
+// Frames within each run barely vary here (1%), so the two runs alone would call +25% certain;
+// the history says runs of this job differ by 15% anyway.
+TEST(TimingVerdict, AChangeInsideALargeRunToRunSpreadIsUnconfirmed) {
+  const TimingChange change =
+      judgeTiming(timedJob(10.0, 1), timedJob(12.5, 2), history(10, 0.15, 4), {}, kSignificance);
+  EXPECT_EQ(change.evidence, TimingEvidence::kHistory);
+  EXPECT_GT(change.p_value, kSignificance);
+  EXPECT_EQ(change.verdict, Verdict::kUnconfirmed);
+  EXPECT_GT(change.detectable_change, 0.25);
+}
+
+TEST(TimingVerdict, FasterOutsideTheSpreadImproves) {
+  const TimingChange change =
+      judgeTiming(timedJob(10.0, 1), timedJob(7.0, 2), history(10, 0.03, 5), {}, kSignificance);
+  EXPECT_EQ(change.verdict, Verdict::kImproved);
+}
+
+TEST(TimingVerdict, TooLittleHistoryFallsBackToTheRunsThemselves) {
+  const TimingChange change = judgeTiming(timedJob(10.0, 1), timedJob(14.0, 2),
+                                          history(kMinHistoryRuns - 1, 0.03, 6), {}, kSignificance);
+  EXPECT_EQ(change.evidence, TimingEvidence::kFrames);
+  EXPECT_EQ(change.verdict, Verdict::kUnconfirmed);
+}
+
+// Repeats are the unit when both runs have them: a test over per-run medians, not frames.
+TEST(TimingVerdict, RepeatsAreTestedRatherThanFrames) {
+  JobResult base = timedJob(10.0, 1), next = timedJob(10.0, 2);
+  for (double median : {10.0, 10.4, 9.7}) base.repeats.push_back(*timedJob(median, 7).timings);
+  for (double median : {10.1, 9.9, 10.2}) next.repeats.push_back(*timedJob(median, 8).timings);
+  const TimingChange change = judgeTiming(base, next, {}, {}, kSignificance);
+  EXPECT_EQ(change.evidence, TimingEvidence::kRepeats);
+  EXPECT_EQ(change.base_samples, 3u);
+  EXPECT_EQ(change.verdict, Verdict::kUnchanged);
+}
+
+TEST(TimingVerdict, InterleavedPairsConfirmARealSlowdownAndClearNoise) {
+  TimingChange change = judgeTiming(timedJob(10.0, 1), timedJob(13.0, 2), {}, {}, kSignificance);
+  ASSERT_EQ(change.verdict, Verdict::kUnconfirmed);
+  ASSERT_TRUE(worthConfirming(change));
+  // The machine drifts by ±20% from pair to pair; within a pair, the new build is 25% slower.
+  const std::vector<double> drift = {1.0, 1.2, 0.85, 1.1, 0.9, 1.15};
+  std::vector<double> a, b;
+  for (std::size_t i = 0; i < drift.size(); ++i) {
+    a.push_back(10.0 * drift[i] * (1 + 0.01 * double(i % 2)));
+    b.push_back(12.5 * drift[i] * (1 - 0.01 * double(i % 3)));
+  }
+  TimingChange confirmed = change;
+  confirmTiming(confirmed, a, b);
+  EXPECT_EQ(confirmed.evidence, TimingEvidence::kConfirmation);
+  EXPECT_NEAR(confirmed.relative_change, 0.25, 0.02);
+  EXPECT_EQ(confirmed.verdict, Verdict::kRegressed);
+  EXPECT_EQ(confirmed.pairs_base_ms, a);
+  // The same drift with no change between the builds: within tolerance, with the power stated.
+  std::vector<double> same;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    same.push_back(a[i] * (1 + 0.01 * double(i % 3) - 0.01));
+  TimingChange cleared = change;
+  confirmTiming(cleared, a, same);
+  EXPECT_EQ(cleared.verdict, Verdict::kUnchanged);
+  EXPECT_THAT(cleared.explanation(), HasSubstr("detects changes of"));
+}
+
+// A change of 5%, under the 10% tolerance, is reported unchanged only with the smallest change
+// the evidence would have caught, never as a bare "unchanged".
+TEST(TimingVerdict, UnchangedSaysWhatTheEvidenceCouldHaveSeen) {
+  const TimingChange change =
+      judgeTiming(timedJob(10.0, 1), timedJob(10.5, 2), history(10, 0.05, 9), {}, kSignificance);
+  EXPECT_EQ(change.verdict, Verdict::kUnchanged);
+  EXPECT_GT(change.detectable_change, 0.05);
+  EXPECT_THAT(change.explanation(), HasSubstr("detects changes of"));
+}
+
+// The history is the job's comparable runs only: another host or other parameters are not the
+// same measurement, and the two compared runs are not their own history.
+TEST(TimingHistory, KeepsComparableEarlierRunsOnly) {
+  std::vector<RunResults> runs;
+  for (int i = 0; i < 6; ++i) {
+    RunResults run = test::syntheticRun("run-" + std::to_string(i), {timedJob(10.0 + i, 10 + i)});
+    run.run.started = "2026-11-2" + std::to_string(i) + "T10:00:00Z";
+    run.run.host = i == 3 ? "another-host" : "host";
+    runs.push_back(run);
+  }
+  runs[4].jobs[0].parameters = {{"shadow", "vsm"}};
+  const TimingHistory history = timingHistoryOf(runs, runs[1], runs[5]);
+  ASSERT_EQ(history.count("cornell-direct"), 1u);
+  // Runs 0 and 2: run 1 and 5 are compared, 3 ran elsewhere, 4 measured something else.
+  EXPECT_EQ(history.at("cornell-direct").size(), 2u);
+  // A later base leaves out what came after the newer run.
+  EXPECT_EQ(timingHistoryOf(runs, runs[0], runs[1]).at("cornell-direct").size(), 0u);
+}
+
+TEST(ResultsDiff, TimingSignificanceIsSidakCorrectedOverTheDiffsTimings) {
+  std::vector<JobResult> jobs;
+  for (int i = 0; i < 4; ++i) {
+    JobResult job = timedJob(10.0, std::uint64_t(20 + i));
+    job.id = "job-" + std::to_string(i);
+    jobs.push_back(job);
+  }
+  const RunResults base = test::syntheticRun("base", jobs);
+  const RunResults next = test::syntheticRun("next", jobs);
+  const DiffReport diff = diffResults(base, next);
+  ASSERT_EQ(diff.timings.size(), 4u);
+  EXPECT_NEAR(diff.timing_comparison_significance, 1 - std::pow(1 - 0.01, 0.25), 1e-12);
+  EXPECT_EQ(diff.timings[0].significance, diff.timing_comparison_significance);
+}
+
+}  // namespace
+}  // namespace gib::results
