@@ -8,6 +8,7 @@
 #include "common/input_error.h"
 #include "common/subprocess.h"
 #include "gib/version.h"
+#include "metrics/timing_statistics.h"
 #include "results/results_diff.h"
 #include "results/results_json.h"
 #include "results/timing_history.h"
@@ -36,7 +37,7 @@ struct DiffCommandOptions {
   std::size_t history_runs = 30;
   bool strict_timing = false;
   bool confirm = false;
-  int pairs = 6;
+  int pairs = 0;  // 0: metrics::recommendedPairs of the diff's per-comparison significance
   std::string base_gibench, new_gibench;
   std::string gl_device;
 };
@@ -104,7 +105,8 @@ void confirmTimings(results::DiffReport& diff, const results::RunResults& base,
   suites::ConfirmationOptions options;
   options.base_gibench = buildOf(base, o.base_gibench, "--base-gibench");
   options.new_gibench = buildOf(next, o.new_gibench, "--new-gibench");
-  options.pairs = o.pairs;
+  options.pairs =
+      o.pairs > 0 ? o.pairs : metrics::recommendedPairs(diff.timing_comparison_significance);
   options.gl_device = o.gl_device;
   char pattern[] = "/tmp/gibench-confirm-XXXXXX";
   if (!mkdtemp(pattern)) throw std::runtime_error("cannot make a temporary directory");
@@ -132,7 +134,7 @@ void confirmTimings(results::DiffReport& diff, const results::RunResults& base,
 }
 
 int runDiff(const DiffCommandOptions& o) {
-  if (o.pairs < 2 || o.pairs > 100)
+  if (o.pairs != 0 && (o.pairs < 2 || o.pairs > 100))
     throw InputError(fmt::format("--pairs {} cannot be tested; give 2 to 100", o.pairs));
   const results::RunResults base = resolveRun(o.base, o.history);
   const results::RunResults next = resolveRun(o.next, o.history);
@@ -171,8 +173,9 @@ CommandRunner addDiffCommand(CLI::App& app) {
   diff->add_flag("--confirm", o->confirm,
                  "settle each changed timing by rendering its job with the base and the new build "
                  "alternately on this machine (A B A B …)");
-  diff->add_option("--pairs", o->pairs, "A/B runs of each build per confirmed job")
-      ->capture_default_str();
+  diff->add_option("--pairs", o->pairs,
+                   "A/B runs of each build per confirmed job (default: enough for its test to "
+                   "reach the diff's significance with room for outliers: 14 to 19)");
   diff->add_option("--base-gibench", o->base_gibench,
                    "the base run's build (default: this gibench, if the base run is its own)");
   diff->add_option("--new-gibench", o->new_gibench,

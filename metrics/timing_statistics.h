@@ -54,11 +54,29 @@ double runToRunSpread(std::span<const double> run_medians_ms);
 TimingTest testAgainstRunToRunSpread(double base_ms, double new_ms,
                                      std::span<const double> history_ms, double significance);
 
-// Interleaved A/B pairs (a_i run right before b_i on one machine): the paired t-test of
-// ln(b_i / a_i), which cancels the slow drift of the machine's state that makes two separate runs
-// differ. Needs two or more pairs of equal length (std::invalid_argument otherwise).
+// Interleaved A/B pairs (a_i run right before b_i on one machine): the exact Wilcoxon
+// signed-rank test of ln(b_i / a_i), with the Hodges–Lehmann estimate of the ratio. Pairing
+// cancels the slow drift of the machine's state that makes two separate runs differ; ranks keep
+// the odd run that landed in another scheduling mode of the software rasterizer (a third faster
+// or slower) from deciding the verdict, as it would decide a t-test. With n pairs the smallest
+// p-value is 2/2ⁿ: fewer pairs than that allows at `significance` detect nothing (infinite
+// detectable change). Needs two or more pairs of equal length (std::invalid_argument otherwise).
 TimingTest testInterleavedPairs(std::span<const double> a_ms, std::span<const double> b_ms,
                                 double significance);
+
+// The exact two-sided p-value of the Wilcoxon signed-rank statistic of `differences` (zeros left
+// out, tied magnitudes given their average rank); 1 when none is left.
+double wilcoxonSignedRankP(std::span<const double> differences);
+
+// The fewest interleaved pairs whose signed-rank test reaches `significance` even when the pair of
+// smallest difference goes the other way: 2ⁿ ≥ 4 / significance.
+int pairsFor(double significance);
+
+// The pairs `gibench diff --confirm` runs by default: pairsFor plus five, which on the
+// development machine (llvmpipe, where one run in twenty-five lands in another scheduling mode)
+// detects a 25% slowdown of a job with probability about 95% at a diff's per-comparison
+// significance (a bootstrap of 258 measured pairs; docs/harness.md, "Timing verdicts").
+int recommendedPairs(double significance);
 
 // Two independent samples of per-repeat (or per-frame) times of two runs: Welch's t-test of the
 // logs. It sees only the noise within each run, not the drift between runs, so the harness takes

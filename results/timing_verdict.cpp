@@ -118,8 +118,8 @@ void confirmTiming(TimingChange& change, std::vector<double> a_ms, std::vector<d
 }
 
 bool worthConfirming(const TimingChange& change) {
-  return change.verdict != Verdict::kUnchanged ||
-         std::abs(change.relative_change) > 0.5 * change.tolerance.relative;
+  return !(change.verdict == Verdict::kUnchanged && change.evidence == TimingEvidence::kHistory &&
+           change.detectable_change <= change.tolerance.relative);
 }
 
 std::string TimingChange::explanation() const {

@@ -4,7 +4,8 @@
 //
 // Evidence, best first:
 //   kConfirmation  interleaved A/B runs of the base and the new build on this machine (`diff
-//                  --confirm`): the paired test of their log ratios cancels the machine's drift.
+//                  --confirm`): the signed-rank test of their log ratios, pair by pair, cancels
+//                  the machine's drift.
 //   kHistory       the run-to-run spread of the job's median over comparable earlier runs (five
 //                  or more, results/timing_history.h): a change is real when it lies outside it.
 //   kRepeats,      only the noise within the two runs (their repeats, else their frames): two
@@ -75,8 +76,10 @@ TimingChange judgeTiming(const JobResult& base, const JobResult& next,
 // Judges again from interleaved A/B runs (their per-run medians, a_i run right before b_i).
 void confirmTiming(TimingChange& change, std::vector<double> a_ms, std::vector<double> b_ms);
 
-// Whether interleaved A/B runs could change the verdict: a change that is not a confident
-// "unchanged" (beyond half the tolerance, or judged anything but unchanged).
+// Whether interleaved A/B runs could change the verdict: every timing but one the history shows
+// unchanged with power to spare (its detectable change within the tolerance). A change the runs
+// alone call small proves nothing: drift between two runs can hide a real slowdown as well as
+// fake one.
 bool worthConfirming(const TimingChange& change);
 
 }  // namespace gib::results

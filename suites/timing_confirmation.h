@@ -17,7 +17,7 @@ namespace gib::suites {
 
 struct ConfirmationOptions {
   std::filesystem::path base_gibench, new_gibench;  // the builds of the two runs
-  int pairs = 6;                                    // A/B runs of each build
+  int pairs = 10;                                   // A/B runs of each build
   std::string gl_device;                            // empty: each build's default
   std::filesystem::path work_dir;                   // for the renders' files
   std::function<void(const std::string&)> log;      // progress, one line per run

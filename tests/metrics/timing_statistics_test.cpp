@@ -88,24 +88,49 @@ TEST(TimingTests, TheRunToRunRuleDetectsItsStatedDetectableChange) {
   EXPECT_GT(double(detected) / kTrials, 0.85) << detected;
 }
 
-// Interleaved A/B pairs: the machine drifts by 30% between pairs, far more than the pairs' own 3%
-// noise; the paired test must neither flag it nor miss a 25% slowdown under it.
-TEST(TimingTests, InterleavedPairsIgnoreDriftAndCatchASlowdown) {
+// Interleaved A/B pairs: the machine drifts by 30% between pairs, far more than the pairs' own
+// 5% noise, and one run in ten lands in another scheduling mode (a third slower or faster: more
+// often than the one in twenty-five measured on llvmpipe); with the recommended pairs, the
+// signed-rank test must neither flag that nor miss a 25% slowdown under it.
+TEST(TimingTests, InterleavedPairsIgnoreDriftAndOutliersAndCatchASlowdown) {
   NoiseSource noise(3);
+  std::bernoulli_distribution outlier(0.1);
+  std::uniform_real_distribution<double> mode(0.67, 1.5);
+  auto run = [&](double median) {
+    const double t = noise.lognormal(median, 0.05);
+    return outlier(noise.generator) ? t * mode(noise.generator) : t;
+  };
+  const int pairs = recommendedPairs(kSignificance);
   int false_alarms = 0, detected = 0;
   for (int trial = 0; trial < kTrials; ++trial) {
     std::vector<double> a, b, slow;
-    for (int i = 0; i < 6; ++i) {
+    for (int i = 0; i < pairs; ++i) {
       const double machine = noise.lognormal(10, 0.3);
-      a.push_back(noise.lognormal(machine, 0.03));
-      b.push_back(noise.lognormal(machine, 0.03));
-      slow.push_back(noise.lognormal(1.25 * machine, 0.03));
+      a.push_back(run(machine));
+      b.push_back(run(machine));
+      slow.push_back(run(1.25 * machine));
     }
     false_alarms += testInterleavedPairs(a, b, kSignificance).p_value < kSignificance;
     detected += testInterleavedPairs(a, slow, kSignificance).p_value < kSignificance;
   }
   EXPECT_LT(double(false_alarms) / kTrials, binomialBound(kSignificance)) << false_alarms;
-  EXPECT_GT(double(detected) / kTrials, 0.99) << detected;
+  EXPECT_GT(double(detected) / kTrials, 0.95) << detected;
+}
+
+TEST(TimingTests, SignedRankPValuesAreExact) {
+  // Every difference positive: only one of the 2ⁿ sign patterns is as extreme, on each side.
+  EXPECT_NEAR(wilcoxonSignedRankP(std::vector<double>{1, 2, 3, 4, 5}), 2.0 / 32, 1e-15);
+  EXPECT_NEAR(wilcoxonSignedRankP(std::vector<double>{1, 2, 3, 4, 5, 6}), 2.0 / 64, 1e-15);
+  // The smallest one negative: W⁺ = 20 of 21; P(W⁺ ≥ 20) = 2/64.
+  EXPECT_NEAR(wilcoxonSignedRankP(std::vector<double>{-1, 2, 3, 4, 5, 6}), 4.0 / 64, 1e-15);
+  EXPECT_EQ(wilcoxonSignedRankP(std::vector<double>{0, 0}), 1.0);
+  EXPECT_NEAR(wilcoxonSignedRankP(std::vector<double>{1, -1}), 1.0, 1e-15);
+  EXPECT_EQ(pairsFor(0.01), 9);  // 2⁹ = 512 ≥ 400
+  EXPECT_EQ(recommendedPairs(0.01), 14);
+  // Fewer pairs than the significance allows detect nothing, and say so.
+  EXPECT_TRUE(std::isinf(testInterleavedPairs(std::vector<double>{1, 2, 3},
+                                              std::vector<double>{2, 3, 4}, kSignificance)
+                             .detectable_change));
 }
 
 // Frames of two runs see only their own noise: with a drift between the runs they reject far
