@@ -22,6 +22,7 @@
 #   GIB_BISECT_GOOD_GIBENCH  the good run's build, instead of building its commit
 #   GIB_BISECT_CONFIRM=0     diff without confirming timings (then a timing change is at most
 #                            "unconfirmed", never a regression)
+#   GIB_BISECT_PAIRS=N       A/B pairs per confirmed job (default: `gibench diff`'s own choice)
 # References come from the usual store, so commits that do not change the reference renderer
 # reuse one render.
 set -uo pipefail
@@ -79,6 +80,7 @@ elif [ "${GIB_BISECT_CONFIRM:-1}" != 0 ]; then
   fi
   if [ -n "$good_build" ]; then
     confirm=(--confirm --base-gibench "$good_build" --new-gibench "$gibench")
+    [ -n "${GIB_BISECT_PAIRS:-}" ] && confirm+=(--pairs "$GIB_BISECT_PAIRS")
   else
     echo "bisect-step: no build of the good run (uncommitted or unknown commit): timings are" \
       "not confirmed; set GIB_BISECT_GOOD_GIBENCH" >&2

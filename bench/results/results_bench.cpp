@@ -13,6 +13,7 @@
 #include "results/history_db.h"
 #include "results/results_diff.h"
 #include "results/results_json.h"
+#include "results/timing_history.h"
 #include "support/synthetic_timings.h"
 #include "support/temporary_directory.h"
 
@@ -90,6 +91,50 @@ void BM_ParseAndReadResults(benchmark::State& state) {
   state.SetBytesProcessed(state.iterations() * std::int64_t(text.size()));
 }
 BENCHMARK(BM_ParseAndReadResults)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// A diff judged against a history: per job, its comparable earlier runs found among 20 recorded
+// runs of the suite (timingHistoryOf) and the run-to-run test, as `gibench diff` and the report do
+// for a nightly run.
+void BM_DiffResultsWithHistory(benchmark::State& state) {
+  const int jobs = int(state.range(0));
+  std::vector<RunResults> history;
+  for (int i = 0; i < 20; ++i) {
+    history.push_back(makeRun("history-" + std::to_string(i), jobs, std::uint64_t(10 + i)));
+    history.back().run.started = "2026-11-" + std::to_string(10 + i) + "T02:00:00Z";
+  }
+  const RunResults base = makeRun("base", jobs, 1);
+  RunResults next = makeRun("next", jobs, 2);
+  next.run.started = "2026-11-30T02:00:00Z";
+  for (auto _ : state) {
+    DiffOptions options;
+    options.history = timingHistoryOf(history, base, next);
+    DiffReport diff = diffResults(base, next, options);
+    benchmark::DoNotOptimize(diff.timings.data());
+  }
+  state.SetItemsProcessed(state.iterations() * jobs);
+}
+BENCHMARK(BM_DiffResultsWithHistory)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// Reading that history from the database: the 20 runs of 1000 jobs, parsed back.
+void BM_LoadTimingHistory(benchmark::State& state) {
+  const int jobs = int(state.range(0));
+  const bench::TemporaryDirectory temporary("gib_timing_history_bench");
+  HistoryDatabase db = HistoryDatabase::open(temporary.path() / "history.sqlite");
+  for (int i = 0; i < 20; ++i) {
+    RunResults run = makeRun("history-" + std::to_string(i), jobs, std::uint64_t(10 + i));
+    run.run.started = "2026-11-" + std::to_string(10 + i) + "T02:00:00Z";
+    db.append(run);
+  }
+  const RunResults base = makeRun("base", jobs, 1);
+  RunResults next = makeRun("next", jobs, 2);
+  next.run.started = "2026-11-30T02:00:00Z";
+  for (auto _ : state) {
+    TimingHistory history = loadTimingHistory(db, base, next, 20);
+    benchmark::DoNotOptimize(history.size());
+  }
+  state.SetItemsProcessed(state.iterations() * jobs);
+}
+BENCHMARK(BM_LoadTimingHistory)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // One append of a new run (a transaction with its jobs and metric values, committed to disk) to
 // a database in a temporary directory.

@@ -51,7 +51,8 @@ git checkout -q "$last"
 cp "$source_dir/scripts/bisect-step.sh" "$work/bisect-step.sh"
 
 git bisect start "$last" "$first" >/dev/null
-GIB_BISECT_GIBENCH="$gibench" git bisect run "$work/bisect-step.sh" "$work/good/results.json" \
+# Nine pairs: the fewest whose test reaches 1% (one timed job); a fourfold slowdown needs no more.
+GIB_BISECT_GIBENCH="$gibench" GIB_BISECT_PAIRS=9 git bisect run "$work/bisect-step.sh" "$work/good/results.json" \
   "$repo/suite.toml" >"$work/bisect.log" 2>&1 || true
 found=$(git rev-parse refs/bisect/bad)
 git bisect reset >/dev/null 2>&1
