@@ -175,7 +175,7 @@ CommandRunner addDiffCommand(CLI::App& app) {
                  "alternately on this machine (A B A B …)");
   diff->add_option("--pairs", o->pairs,
                    "A/B runs of each build per confirmed job (default: enough for its test to "
-                   "reach the diff's significance with room for outliers: 14 to 19)");
+                   "reach the diff's significance with one outlier and one lost pair: 16 to 21)");
   diff->add_option("--base-gibench", o->base_gibench,
                    "the base run's build (default: this gibench, if the base run is its own)");
   diff->add_option("--new-gibench", o->new_gibench,

@@ -72,10 +72,12 @@ double wilcoxonSignedRankP(std::span<const double> differences);
 // smallest difference goes the other way: 2ⁿ ≥ 4 / significance.
 int pairsFor(double significance);
 
-// The pairs `gibench diff --confirm` runs by default: pairsFor plus five, which on the
-// development machine (llvmpipe, where one run in twenty-five lands in another scheduling mode)
-// detects a 25% slowdown of a job with probability about 95% at a diff's per-comparison
-// significance (a bootstrap of 258 measured pairs; docs/harness.md, "Timing verdicts").
+// The pairs `gibench diff --confirm` runs by default: the fewest whose test still reaches
+// `significance` when the pair of largest difference (one run caught by a hiccup of the machine,
+// or in another scheduling mode of the software rasterizer) and the pair of smallest difference
+// both go the other way; 16 at 0.01, 18 at a diff's per-comparison significance with three timed
+// jobs. With two pairs fewer, one such pair in sixteen hid a 25% slowdown from the test twice in
+// nine measured comparisons (docs/harness.md, "Timing verdicts").
 int recommendedPairs(double significance);
 
 // Two independent samples of per-repeat (or per-frame) times of two runs: Welch's t-test of the

@@ -126,7 +126,15 @@ TEST(TimingTests, SignedRankPValuesAreExact) {
   EXPECT_EQ(wilcoxonSignedRankP(std::vector<double>{0, 0}), 1.0);
   EXPECT_NEAR(wilcoxonSignedRankP(std::vector<double>{1, -1}), 1.0, 1e-15);
   EXPECT_EQ(pairsFor(0.01), 9);  // 2⁹ = 512 ≥ 400
-  EXPECT_EQ(recommendedPairs(0.01), 14);
+  // Sixteen pairs: the largest and the smallest difference reversed still give p ≤ 0.01
+  // (W⁻ = 17: p = 0.0063), which fifteen do not (W⁻ = 16: p = 0.0103).
+  EXPECT_EQ(recommendedPairs(0.01), 16);
+  std::vector<double> hiccup;
+  for (int rank = 1; rank <= 16; ++rank) hiccup.push_back(rank == 1 || rank == 16 ? -rank : rank);
+  EXPECT_LE(wilcoxonSignedRankP(hiccup), 0.01);
+  hiccup.pop_back();
+  hiccup.back() = -15;
+  EXPECT_GT(wilcoxonSignedRankP(hiccup), 0.01);
   // Fewer pairs than the significance allows detect nothing, and say so.
   EXPECT_TRUE(std::isinf(testInterleavedPairs(std::vector<double>{1, 2, 3},
                                               std::vector<double>{2, 3, 4}, kSignificance)
