@@ -170,17 +170,22 @@ CommandRunner addDiffCommand(CLI::App& app) {
       ->check(CLI::Range(std::size_t(1), std::size_t(1000)));
   diff->add_flag("--strict-timing", o->strict_timing,
                  "count an unconfirmed slowdown as a regression");
-  diff->add_flag("--confirm", o->confirm,
-                 "settle each changed timing by rendering its job with the base and the new build "
-                 "alternately on this machine (A B A B …)");
+  CLI::Option* confirm = diff->add_flag(
+      "--confirm", o->confirm,
+      "settle each changed timing by rendering its job with the base and the new build "
+      "alternately on this machine (A B A B …)");
   diff->add_option("--pairs", o->pairs,
                    "A/B runs of each build per confirmed job (default: enough for its test to "
-                   "reach the diff's significance with one outlier and one lost pair: 16 to 21)");
+                   "reach the diff's significance with one outlier and one lost pair: 16 to 21)")
+      ->needs(confirm);
   diff->add_option("--base-gibench", o->base_gibench,
-                   "the base run's build (default: this gibench, if the base run is its own)");
+                   "the base run's build (default: this gibench, if the base run is its own)")
+      ->needs(confirm);
   diff->add_option("--new-gibench", o->new_gibench,
-                   "the new run's build (default: this gibench, if the new run is its own)");
-  diff->add_option("--gl-device", o->gl_device, "auto | surfaceless | N, for the A/B renders");
+                   "the new run's build (default: this gibench, if the new run is its own)")
+      ->needs(confirm);
+  diff->add_option("--gl-device", o->gl_device, "auto | surfaceless | N, for the A/B renders")
+      ->needs(confirm);
   return [o] { return runDiff(*o); };
 }
 

@@ -17,6 +17,8 @@
 #include <chrono>
 #include <fstream>
 #include <thread>
+#include <utility>
+#include <vector>
 
 extern char** environ;
 
@@ -361,7 +363,7 @@ TEST_F(RunCommandTest, DiffConfirmRendersEachBuildAlternately) {
   const nlohmann::json diff = nlohmann::json::parse(r.out);
   ASSERT_EQ(diff["timings"].size(), 2u);
   for (const auto& timing : diff["timings"]) {
-    if (timing["evidence"] != "interleaved A/B") continue;  // changes within half the tolerance
+    if (timing["evidence"] != "interleaved A/B") continue;  // settled by the history
     EXPECT_EQ(timing["pairs_base_ms"].size(), 3u);
     EXPECT_EQ(timing["pairs_new_ms"].size(), 3u);
   }
@@ -372,6 +374,29 @@ TEST_F(RunCommandTest, DiffConfirmRendersEachBuildAlternately) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_THAT(missing.err, HasSubstr("--base-gibench"));
   EXPECT_EQ(test::countLines(missing.err), 1) << missing.err;
+}
+
+// Options `diff` cannot act on: a pair count no test can use, and A/B options without --confirm
+// (which would otherwise be ignored without a word). One line each, exit 2, naming the option.
+TEST_F(RunCommandTest, DiffRefusesOptionsItCannotActOn) {
+  ASSERT_EQ(run(dir_ / "a", {"--no-history"}).exit_code, 0);
+  const std::string a = (dir_ / "a").string();
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--confirm", "--pairs", "1"}, "--pairs"},
+      {{"--confirm", "--pairs", "101"}, "--pairs"},
+      {{"--pairs", "16"}, "--confirm"},
+      {{"--base-gibench", "gibench"}, "--confirm"},
+      {{"--history-runs", "0"}, "--history-runs"},
+  };
+  for (const auto& [options, named] : cases) {
+    std::vector<std::string> args = {"diff", a, a, "--store", store().string()};
+    args.insert(args.end(), options.begin(), options.end());
+    const test::CommandResult r = test::runGibench(args, dir_.path());
+    EXPECT_EQ(r.exit_code, 2) << options.back() << ": " << r.err;
+    EXPECT_THAT(r.err, HasSubstr(named));
+    EXPECT_EQ(test::countLines(r.err), 1) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
 }
 
 }  // namespace
