@@ -76,8 +76,8 @@ int pairsFor(double significance);
 // `significance` when the pair of largest difference (one run caught by a hiccup of the machine,
 // or in another scheduling mode of the software rasterizer) and the pair of smallest difference
 // both go the other way; 16 at 0.01, 18 at a diff's per-comparison significance with three timed
-// jobs. With two pairs fewer, one such pair in sixteen hid a 25% slowdown from the test twice in
-// nine measured comparisons (docs/harness.md, "Timing verdicts").
+// jobs. With two pairs fewer, one such pair in sixteen hid a 25% slowdown from the test in 2
+// of 21 measured comparisons (docs/harness.md, "Timing verdicts").
 int recommendedPairs(double significance);
 
 // Two independent samples of per-repeat (or per-frame) times of two runs: Welch's t-test of the

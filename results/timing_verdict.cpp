@@ -143,6 +143,10 @@ std::string TimingChange::explanation() const {
                                  p_value, significance);
   if (detectable_change > 0)
     text += fmt::format("; detects changes of {} or more", percent(detectable_change));
+  // A change the test sees but the tolerance allows is named as such: "unchanged" means
+  // "within the tolerance", not "the same".
+  if (verdict == Verdict::kUnchanged && p_value < significance)
+    text += fmt::format("; a real change, within the {} tolerance", percent(tolerance.relative));
   if (verdict == Verdict::kUnconfirmed)
     text += evidence == TimingEvidence::kConfirmation || evidence == TimingEvidence::kHistory
                 ? "; not told from noise"

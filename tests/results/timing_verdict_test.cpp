@@ -16,6 +16,7 @@ namespace gib::results {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr double kSignificance = 0.01;
 
@@ -104,6 +105,26 @@ TEST(TimingVerdict, InterleavedPairsConfirmARealSlowdownAndClearNoise) {
   confirmTiming(cleared, a, same);
   EXPECT_EQ(cleared.verdict, Verdict::kUnchanged);
   EXPECT_THAT(cleared.explanation(), HasSubstr("detects changes of"));
+}
+
+// A 6% slowdown that 18 interleaved pairs see clearly is within the 10% tolerance: unchanged, but
+// named as a real change, so a user reading the line does not take it for "the same".
+TEST(TimingVerdict, ARealChangeWithinToleranceIsNamed) {
+  TimingChange change = judgeTiming(timedJob(10.0, 1), timedJob(10.6, 2), {}, {}, kSignificance);
+  std::vector<double> a, b;
+  for (int i = 0; i < 18; ++i) {
+    const double machine = 1.0 + 0.02 * double(i % 5);
+    a.push_back(10.0 * machine);
+    b.push_back(10.6 * machine * (1 + 0.003 * double(i % 3)));
+  }
+  confirmTiming(change, a, b);
+  EXPECT_EQ(change.verdict, Verdict::kUnchanged);
+  EXPECT_LT(change.p_value, change.significance);
+  EXPECT_THAT(change.explanation(), HasSubstr("a real change, within the 10.0% tolerance"));
+  // Pairs that see nothing say nothing of the kind.
+  TimingChange same = judgeTiming(timedJob(10.0, 1), timedJob(10.6, 2), {}, {}, kSignificance);
+  confirmTiming(same, a, a);
+  EXPECT_THAT(same.explanation(), Not(HasSubstr("real change")));
 }
 
 // A change of 5%, under the 10% tolerance, is reported unchanged only with the smallest change
