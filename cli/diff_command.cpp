@@ -134,8 +134,6 @@ void confirmTimings(results::DiffReport& diff, const results::RunResults& base,
 }
 
 int runDiff(const DiffCommandOptions& o) {
-  if (o.pairs != 0 && (o.pairs < 2 || o.pairs > 100))
-    throw InputError(fmt::format("--pairs {} cannot be tested; give 2 to 100", o.pairs));
   const results::RunResults base = resolveRun(o.base, o.history);
   const results::RunResults next = resolveRun(o.next, o.history);
   results::DiffOptions options;
@@ -177,6 +175,7 @@ CommandRunner addDiffCommand(CLI::App& app) {
   diff->add_option("--pairs", o->pairs,
                    "A/B runs of each build per confirmed job (default: enough for its test to "
                    "reach the diff's significance with one outlier and one lost pair: 16 to 21)")
+      ->check(CLI::Range(2, 100))
       ->needs(confirm);
   diff->add_option("--base-gibench", o->base_gibench,
                    "the base run's build (default: this gibench, if the base run is its own)")

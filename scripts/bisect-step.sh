@@ -10,10 +10,10 @@
 # script and the suite file out of the tree first: bisect checks out commits that may lack them.
 #
 # Timings: `gibench diff --confirm` reruns each job whose frame time changed with the good run's
-# build and this commit's build alternately (A B A B …, enough pairs for the significance), so a slowdown is called only
-# when it survives on this machine, now (docs/harness.md, "Timing verdicts"). The good build is
-# the commit recorded in GOOD_RESULTS, built once into $GIB_BISECT_BUILD-good-<commit> (a git
-# worktree), unless GIB_BISECT_GOOD_GIBENCH names it.
+# build and this commit's build alternately (A B A B …, enough pairs for the significance), so
+# a slowdown is called only when it survives on this machine, now (docs/harness.md, "Timing
+# verdicts"). The good build is the commit recorded in GOOD_RESULTS, built once into
+# $GIB_BISECT_BUILD-good-<commit> (a git worktree), unless GIB_BISECT_GOOD_GIBENCH names it.
 #
 # Environment:
 #   GIB_BISECT_BUILD         where to build (default build/bisect in the work tree; only gibench)

@@ -16,8 +16,10 @@
 namespace gib::suites {
 
 struct ConfirmationOptions {
+  // A/B runs of each build: the caller's choice (gibench diff: --pairs, else
+  // metrics::recommendedPairs); fewer than two are refused.
+  int pairs = 0;
   std::filesystem::path base_gibench, new_gibench;  // the builds of the two runs
-  int pairs = 10;                                   // A/B runs of each build
   std::string gl_device;                            // empty: each build's default
   std::filesystem::path work_dir;                   // for the renders' files
   std::function<void(const std::string&)> log;      // progress, one line per run
