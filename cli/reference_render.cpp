@@ -33,6 +33,11 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   settings.height = o.height.value_or(scene.default_height);
   settings.spp = std::uint32_t(o.spp);
   settings.seed = o.seed;
+  if (o.replicas < 0 || o.replicas > o.spp)
+    throw InputError(fmt::format("--replicas {} is not in 1..--spp ({}); give a divisor of --spp",
+                                 o.replicas, o.spp));
+  settings.replicas = std::uint32_t(o.replicas);
+  settings.sampler = ref::parseSamplerName(o.sampler);
   settings.path_class.min_bounces = o.min_bounces;
   if (o.max_bounces) settings.path_class.max_bounces = *o.max_bounces;
   settings.threads = o.threads;
@@ -55,6 +60,8 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   fmt::print("rendered   {}x{} at {} spp in {:.2f} s ({:.2f} Mrays/s, peak memory {} MiB)\n",
              settings.width, settings.height, settings.spp, result.seconds,
              result.raysPerSecond() * 1e-6, metadata.at("gibench/peak_rss_mb"));
+  fmt::print("variance   from {} replicas of {} spp ({} degrees of freedom)\n", result.replicas,
+             settings.spp / result.replicas, result.variance_dof);
   fmt::print("exr        {}\n", out.string());
   fmt::print("png        {}\n", png.string());
   if (o.checkpoints)

@@ -32,6 +32,17 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->group(kReference);
   render->add_option("--seed", o->seed, "random seed")->capture_default_str()->group(kReference);
   render
+      ->add_option("--replicas", o->replicas,
+                   "independently scrambled batches whose spread gives the variance layer; must "
+                   "divide --spp (default: its largest divisor up to 8)")
+      ->group(kReference);
+  render
+      ->add_option("--sampler", o->sampler,
+                   "sobol (padded Owen-scrambled Sobol points) or independent (classic Monte "
+                   "Carlo, for comparison)")
+      ->capture_default_str()
+      ->group(kReference);
+  render
       ->add_option("--min-bounces", o->min_bounces,
                    "only paths with at least this many bounces (0: emitters seen directly)")
       ->capture_default_str()

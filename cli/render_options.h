@@ -20,6 +20,8 @@ struct RenderOptions {
   // Reference only.
   int spp = 64;
   std::uint64_t seed = 0;
+  long long replicas = 0;  // 0: ref::defaultReplicas
+  std::string sampler = "sobol";
   int min_bounces = 0;
   std::optional<int> max_bounces;
   int threads = 0;

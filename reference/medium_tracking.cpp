@@ -8,7 +8,7 @@ namespace gib::ref {
 namespace {
 
 // Optical thickness to the next tentative collision: an exponential variate of mean 1.
-float sampleOpticalThickness(SampleStream& random) {
+float sampleOpticalThickness(WalkRandom& random) {
   return -std::log1p(-random.next());
 }
 
@@ -16,7 +16,7 @@ float sampleOpticalThickness(SampleStream& random) {
 
 template <typename OnTentativeCollision>
 void MediumTracker::trackTentativeCollisions(const glm::vec3& origin, const glm::vec3& direction,
-                                             float t_max, SampleStream& random,
+                                             float t_max, WalkRandom& random,
                                              OnTentativeCollision&& on_collision) const {
   float remaining = sampleOpticalThickness(random);
   walkMajorants(origin, direction, t_max, [&](float t0, float t1, float majorant) {
@@ -38,7 +38,7 @@ void MediumTracker::trackTentativeCollisions(const glm::vec3& origin, const glm:
 }
 
 float MediumTracker::sampleCollision(const glm::vec3& origin, const glm::vec3& direction,
-                                     float t_max, SampleStream& random) const {
+                                     float t_max, WalkRandom random) const {
   float collision = std::numeric_limits<float>::infinity();
   trackTentativeCollisions(origin, direction, t_max, random, [&](float t, float real_fraction) {
     // A tentative collision is real with probability σt/majorant, else null: go on.
@@ -50,7 +50,7 @@ float MediumTracker::sampleCollision(const glm::vec3& origin, const glm::vec3& d
 }
 
 float MediumTracker::transmittance(const glm::vec3& origin, const glm::vec3& direction, float t_max,
-                                   SampleStream& random) const {
+                                   WalkRandom random) const {
   // Below this estimate, Russian roulette decides whether the walk goes on.
   constexpr float kRouletteThreshold = 0.1f;
   float estimate = 1.0f;

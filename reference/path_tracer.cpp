@@ -25,6 +25,14 @@ float maxComponent(const Rgb& c) {
   return std::max(c.r, std::max(c.g, c.b));
 }
 
+// The randomness of a tracking walk whose first draw is `first` (one of the sampler's
+// dimensions). Without a medium no walk happens, and the point is not computed.
+template <typename FirstDraw>
+WalkRandom walkRandom(bool has_medium, PathSampler& sampler, FirstDraw&& first) {
+  return has_medium ? WalkRandom(first(), sampler.independent())
+                    : WalkRandom(sampler.independent());
+}
+
 }  // namespace
 
 PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class)
@@ -39,7 +47,7 @@ PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class)
 }
 
 float PathTracer::segmentTransmittance(const glm::vec3& origin, const glm::vec3& target,
-                                       SampleStream& random, std::uint32_t& rays) const {
+                                       WalkRandom random, std::uint32_t& rays) const {
   // Shadow rays stop `epsilon` short of the target so that the surface it lies on is not found.
   glm::vec3 d = target - origin;
   float length = glm::length(d);
@@ -52,23 +60,24 @@ float PathTracer::segmentTransmittance(const glm::vec3& origin, const glm::vec3&
 }
 
 float PathTracer::rayTransmittance(const glm::vec3& origin, const glm::vec3& direction,
-                                   SampleStream& random, std::uint32_t& rays) const {
+                                   WalkRandom random, std::uint32_t& rays) const {
   ++rays;
   if (embree_.occluded(origin, direction, 0.0f, kInfinity)) return 0.0f;
   return medium_ ? medium_->transmittance(origin, direction, kInfinity, random) : 1.0f;
 }
 
-Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
+Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
                                std::uint32_t& rays) const {
   // Geometry (distances, cosines) is measured from the scattering point itself; only shadow rays
   // start from the offset origin, so the offset does not bias inverse-square falloff.
   Rgb result(0.0f);
   const glm::vec3 origin = v.spawnOrigin();
+  const bool has_medium = medium_.has_value();
 
   // Area lights: one point chosen by power, weighted against BSDF or phase sampling.
   if (!area_lights_.empty()) {
-    const float u_select = random.next();
-    const glm::vec2 u_point(random.next(), random.next());
+    const float u_select = sampler.get1D(VertexDimension::kLightChoice);
+    const glm::vec2 u_point = sampler.get2D(VertexDimension::kLightPoint);
     const AreaLightSample s = area_lights_.sample(u_select, u_point);
     const TriangleRecord& light = triangles_[s.triangle];
     const glm::vec3 to_light = s.point - v.point;
@@ -77,7 +86,11 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
     const float cos_light = -glm::dot(light.normal, wi);
     const Rgb f = v.evaluate(wi);
     if (cos_light > 0 && dist2 > 0 && maxComponent(f) > 0) {
-      const float transmittance = segmentTransmittance(origin, s.point, random, rays);
+      const float transmittance = segmentTransmittance(
+          origin, s.point,
+          walkRandom(has_medium, sampler,
+                     [&] { return sampler.get1D(VertexDimension::kLightShadow); }),
+          rays);
       if (transmittance > 0) {
         const float pdf_light = s.pdf_area * dist2 / cos_light;
         const float weight = powerHeuristic(pdf_light, v.pdf(wi));
@@ -89,19 +102,29 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
 
   // Constant sky: a uniform direction, weighted against BSDF or phase sampling.
   if (has_sky_) {
-    const glm::vec3 wi = v.sampleSkyDirection({random.next(), random.next()});
+    const glm::vec3 wi = v.sampleSkyDirection(sampler.get2D(VertexDimension::kSkyDirection));
     const Rgb f = v.evaluate(wi);
     const float pdf_sky = v.skyPdf(wi);
     if (pdf_sky > 0 && maxComponent(f) > 0) {
-      const float transmittance = rayTransmittance(origin, wi, random, rays);
+      const float transmittance =
+          rayTransmittance(origin, wi,
+                           walkRandom(has_medium, sampler,
+                                      [&] { return sampler.get1D(VertexDimension::kSkyShadow); }),
+                           rays);
       if (transmittance > 0)
         result += f * scene_.sky_radiance *
                   (transmittance * powerHeuristic(pdf_sky, v.pdf(wi)) / pdf_sky);
     }
   }
 
-  // Spot lights: I(θ) = I·cosᵏθ inside the cone; irradiance I·cos/d².
+  // Spot lights: I(θ) = I·cosᵏθ inside the cone; irradiance I·cos/d². Delta light j's shadow
+  // walk starts from its own dimension (spots first, then directional lights).
+  std::size_t delta_light = 0;
+  auto delta_light_walk = [&](std::size_t j) {
+    return walkRandom(has_medium, sampler, [&] { return sampler.deltaLightShadow(j); });
+  };
   for (const scene::SpotLight& spot : scene_.spot_lights) {
+    const std::size_t j = delta_light++;
     const glm::vec3 to_light = spot.position - v.point;
     const float dist2 = glm::dot(to_light, to_light);
     const glm::vec3 wi = to_light / std::sqrt(dist2);
@@ -109,7 +132,8 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
     if (cos_axis < std::cos(glm::radians(spot.cone_angle_deg))) continue;
     const Rgb f = v.evaluate(wi);
     if (maxComponent(f) <= 0) continue;
-    const float transmittance = segmentTransmittance(origin, spot.position, random, rays);
+    const float transmittance =
+        segmentTransmittance(origin, spot.position, delta_light_walk(j), rays);
     if (transmittance <= 0) continue;
     const Rgb intensity =
         spot.intensity * std::pow(std::max(cos_axis, 0.0f), spot.falloff_exponent);
@@ -118,17 +142,18 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, SampleStream& random,
 
   // Directional lights: irradiance E on a plane perpendicular to the light.
   for (const scene::DirectionalLight& sun : scene_.directional_lights) {
+    const std::size_t j = delta_light++;
     const glm::vec3 wi = -glm::normalize(sun.direction);
     const Rgb f = v.evaluate(wi);
     if (maxComponent(f) <= 0) continue;
-    const float transmittance = rayTransmittance(origin, wi, random, rays);
+    const float transmittance = rayTransmittance(origin, wi, delta_light_walk(j), rays);
     if (transmittance > 0) result += f * sun.irradiance * transmittance;
   }
   return result;
 }
 
 RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
-                                    const glm::vec3& camera_direction, SampleStream& random) const {
+                                    const glm::vec3& camera_direction, PathSampler& sampler) const {
   RadianceSample out;
   auto record = [&](int bounces, const Rgb& contribution) {
     if (!path_class_.contains(bounces)) return;
@@ -147,12 +172,17 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
   glm::vec3 previous_normal(0.0f);
 
   for (;;) {
-    // Find the next surface, then whether the medium scatters the path before it.
+    // Find the next surface, then whether the medium scatters the path before it. The vertex
+    // found is number `bounces`, and draws from that vertex's dimensions.
+    sampler.startVertex(bounces);
     ++out.rays;
     const Hit hit = embree_.intersect(origin, direction);
     const float t_surface = hit.valid() ? hit.t : kInfinity;
     const float t_medium =
-        medium_ ? medium_->sampleCollision(origin, direction, t_surface, random) : kInfinity;
+        medium_ ? medium_->sampleCollision(
+                      origin, direction, t_surface,
+                      {sampler.get1D(VertexDimension::kFreeFlight), sampler.independent()})
+                : kInfinity;
 
     ScatteringVertex vertex;
     std::optional<Bsdf> bsdf;
@@ -201,18 +231,18 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
     // Scatter: this vertex is bounce number `bounces`.
     ++bounces;
     if (bounces >= path_class_.min_bounces)
-      record(bounces, throughput * estimateDirect(vertex, random, out.rays));
+      record(bounces, throughput * estimateDirect(vertex, sampler, out.rays));
 
     // Continue the path by sampling the BSDF or the phase function.
     glm::vec3 wi;
     float pdf;
     if (vertex.inMedium()) {
-      wi = sampleHenyeyGreenstein(direction, vertex.g, {random.next(), random.next()});
+      wi = sampleHenyeyGreenstein(direction, vertex.g, sampler.get2D(VertexDimension::kDirection));
       pdf = vertex.pdf(wi);
       // The phase function is its own density: the weight f/pdf is exactly 1.
     } else {
-      const float u_lobe = random.next();
-      const BsdfSample s = bsdf->sample(u_lobe, {random.next(), random.next()});
+      const BsdfSample s = bsdf->sample(sampler.get1D(VertexDimension::kLobe),
+                                        sampler.get2D(VertexDimension::kDirection));
       const float cos_wi = glm::dot(vertex.normal, s.wi);
       if (s.pdf <= 0 || cos_wi <= 0 || maxComponent(s.f) <= 0) break;
       wi = s.wi;
@@ -227,7 +257,7 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
     if (bounces >= kRouletteStartBounce) {
       const float q = std::min(1.0f, maxComponent(throughput));
       if (q < 1.0f) {
-        if (random.next() >= q) break;
+        if (sampler.get1D(VertexDimension::kRoulette) >= q) break;
         throughput /= q;
       }
     }

@@ -8,7 +8,7 @@
 #include "reference/area_light_sampler.h"
 #include "reference/embree_scene.h"
 #include "reference/medium_tracking.h"
-#include "reference/rng.h"
+#include "reference/path_sampler.h"
 #include "reference/scattering_vertex.h"
 #include "reference/triangle_table.h"
 #include "scene/medium.h"
@@ -41,7 +41,7 @@ class PathTracer {
   PathTracer(const scene::Scene& scene, PathClass path_class);
 
   RadianceSample radiance(const glm::vec3& origin, const glm::vec3& direction,
-                          SampleStream& random) const;
+                          PathSampler& sampler) const;
 
   const EmbreeScene& embree() const { return embree_; }
   const PathClass& pathClass() const { return path_class_; }
@@ -51,14 +51,14 @@ class PathTracer {
  private:
   // Next-event estimation at a scattering vertex: one sample of the area lights, one of the sky,
   // and every spot and directional light (delta lights, so no MIS).
-  scene::Rgb estimateDirect(const ScatteringVertex& v, SampleStream& random,
+  scene::Rgb estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
                             std::uint32_t& rays) const;
   // Fraction of light arriving at `target` from `origin`: 0 when a surface blocks the segment,
   // else the medium's transmittance (1 without a medium).
-  float segmentTransmittance(const glm::vec3& origin, const glm::vec3& target, SampleStream& random,
+  float segmentTransmittance(const glm::vec3& origin, const glm::vec3& target, WalkRandom random,
                              std::uint32_t& rays) const;
   // The same for a ray to infinity.
-  float rayTransmittance(const glm::vec3& origin, const glm::vec3& direction, SampleStream& random,
+  float rayTransmittance(const glm::vec3& origin, const glm::vec3& direction, WalkRandom random,
                          std::uint32_t& rays) const;
 
   const scene::Scene& scene_;

@@ -21,10 +21,10 @@ namespace {
 
 constexpr int kTileSize = 16;
 
-// Running sums per pixel, in double so that millions of samples do not lose precision.
+// Running sums per pixel, in double so that millions of samples do not lose precision. The
+// replicas' sums (for the variance) live in a separate array of replicas × 3 per pixel.
 struct PixelSums {
   double sum[3] = {0, 0, 0};
-  double sum_squares[3] = {0, 0, 0};
   double direct[3] = {0, 0, 0};
 };
 
@@ -60,6 +60,32 @@ void validateRenderSettings(const RenderSettings& s) {
     throw InputError(fmt::format("--min-bounces {} exceeds --max-bounces {}; no path is left",
                                  s.path_class.min_bounces, s.path_class.max_bounces));
   if (s.threads < 0) throw InputError("--threads must be >= 0 (0 uses every core)");
+  if (s.replicas > 0 && s.spp % s.replicas != 0)
+    throw InputError(fmt::format(
+        "--replicas {} does not divide --spp {}; give a divisor of the sample count (or 0 for "
+        "the default, {})",
+        s.replicas, s.spp, defaultReplicas(s.spp)));
+}
+
+std::uint32_t defaultReplicas(std::uint32_t spp) {
+  for (std::uint32_t k = std::min(spp, kDefaultMaxReplicas); k > 1; --k)
+    if (spp % k == 0) return k;
+  return spp;
+}
+
+const char* samplerName(SamplerKind kind) {
+  return kind == SamplerKind::kSobol ? "sobol" : "independent";
+}
+
+SamplerKind parseSamplerName(const std::string& name) {
+  if (name == "sobol") return SamplerKind::kSobol;
+  if (name == "independent") return SamplerKind::kIndependent;
+  throw InputError(fmt::format(
+      "unknown sampler '{}'; give sobol (low discrepancy, the default) or independent", name));
+}
+
+std::uint32_t replicasOf(const RenderSettings& settings) {
+  return settings.replicas > 0 ? settings.replicas : defaultReplicas(settings.spp);
 }
 
 std::vector<std::uint32_t> passBoundaries(std::uint32_t spp) {
@@ -80,6 +106,8 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   const scene::CameraFrame camera = scene::makeCameraFrame(scene.camera, width, height);
   const std::vector<Tile> tiles = makeTiles(width, height);
   std::vector<PixelSums> sums(std::size_t(width) * height);
+  const std::uint32_t replicas = replicasOf(settings);
+  std::vector<double> replica_sums(replicas > 1 ? sums.size() * replicas * 3 : 0);
   std::atomic<std::uint64_t> rays{0};
 
   ProgressBar progress("reference", std::uint64_t(settings.spp) * width * height, "samples");
@@ -96,17 +124,20 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
             const auto pixel = std::uint32_t(y * width + x);
             PixelSums& acc = sums[pixel];
             for (std::uint32_t s = first; s < end; ++s) {
-              SampleStream random(settings.seed, pixel, s);
+              PathSampler sampler(settings.seed, pixel, s, replicas, settings.sampler);
               // Box filter: a uniform point in the pixel.
-              float px = float(x) + random.next();
-              float py = float(y) + random.next();
-              glm::vec3 dir = scene::cameraRayDirection(camera, width, height, px, py);
-              RadianceSample r = tracer.radiance(camera.origin, dir, random);
+              const glm::vec2 position = glm::vec2(x, y) + sampler.pixelPosition();
+              glm::vec3 dir =
+                  scene::cameraRayDirection(camera, width, height, position.x, position.y);
+              RadianceSample r = tracer.radiance(camera.origin, dir, sampler);
               tile_rays += r.rays;
+              double* replica =
+                  replicas > 1 ? &replica_sums[(std::size_t(pixel) * replicas + s % replicas) * 3]
+                               : nullptr;
               for (int c = 0; c < 3; ++c) {
                 acc.sum[c] += r.total[c];
-                acc.sum_squares[c] += double(r.total[c]) * r.total[c];
                 acc.direct[c] += r.direct[c];
+                if (replica) replica[c] += r.total[c];
               }
             }
           }
@@ -134,20 +165,28 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   RenderResult result;
   const std::uint32_t n = settings.spp;
   result.spp = n;
+  result.replicas = replicas;
+  result.variance_dof = replicas - 1;
   result.mean = meanImage(sums, width, height, n);
   result.direct = image::Image(width, height);
   result.indirect = image::Image(width, height);
-  if (n >= 2) result.variance = image::Image(width, height);
+  if (replicas > 1) result.variance = image::Image(width, height);
+  const double per_replica = double(n / replicas);
   for (std::size_t i = 0; i < sums.size(); ++i)
     for (int c = 0; c < 3; ++c) {
       const double mean = sums[i].sum[c] / n;
       const double direct = sums[i].direct[c] / n;
       result.direct.data()[3 * i + c] = float(direct);
       result.indirect.data()[3 * i + c] = float(mean - direct);
-      if (n >= 2) {
-        // Unbiased sample variance, divided by n for the variance of the mean.
-        double sample_variance = (sums[i].sum_squares[c] - n * mean * mean) / (n - 1);
-        result.variance.data()[3 * i + c] = float(std::max(0.0, sample_variance) / n);
+      if (replicas > 1) {
+        // The replicas' means are independent estimates of the pixel, each of variance K·V
+        // where V is the variance of their average: V = Σ(mᵣ − m)² / (K (K − 1)).
+        double squares = 0;
+        for (std::uint32_t k = 0; k < replicas; ++k) {
+          const double d = replica_sums[(i * replicas + k) * 3 + c] / per_replica - mean;
+          squares += d * d;
+        }
+        result.variance.data()[3 * i + c] = float(squares / (double(replicas) * (replicas - 1)));
       }
     }
   result.rays = rays.load();

@@ -1,5 +1,6 @@
 // Progressive rendering of the reference image: passes of samples over tiles (TBB), per-pixel
-// mean and variance from running sums, snapshots at 1, 2, 4, … samples per pixel.
+// mean and, from independently scrambled replicas, the variance of that mean; snapshots at 1, 2,
+// 4, … samples per pixel.
 #pragma once
 
 #include "image/image.h"
@@ -8,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 namespace gib::ref {
 
@@ -16,6 +18,10 @@ struct RenderSettings {
   int height = 512;
   std::uint32_t spp = 64;
   std::uint64_t seed = 0;
+  // Independently scrambled batches the samples are split into (reference/path_sampler.h); it
+  // must divide spp. 0: automatic (defaultReplicas).
+  std::uint32_t replicas = 0;
+  SamplerKind sampler = SamplerKind::kSobol;
   PathClass path_class;
   int threads = 0;        // 0: all cores. The image does not depend on it.
   bool progress = false;  // draw a progress bar on a terminal
@@ -23,9 +29,13 @@ struct RenderSettings {
 
 struct RenderResult {
   image::Image mean;
-  // Variance of the per-pixel mean (the sample variance divided by spp), so that
-  // mean ± 3·sqrt(variance) is a 3-standard-error interval. Empty when spp < 2.
+  // Variance of the per-pixel mean, estimated from the spread of the replicas' means (the samples
+  // of one replica are correlated, so the per-sample variance would not do), with
+  // `variance_dof` = replicas − 1 degrees of freedom: (mean − truth)/sqrt(variance) follows
+  // Student's t with that many. Empty with one replica.
   image::Image variance;
+  std::uint32_t replicas = 1;
+  std::uint32_t variance_dof = 0;
   image::Image direct;    // mean of the paths with at most one bounce
   image::Image indirect;  // mean of the paths with two bounces or more
   std::uint32_t spp = 0;
@@ -37,8 +47,24 @@ struct RenderResult {
 // Called after the passes that end at 1, 2, 4, … spp (and at the final spp) with the mean so far.
 using CheckpointCallback = std::function<void(std::uint32_t spp, const image::Image& mean)>;
 
-// Throws gib::InputError for impossible settings (zero size or spp, negative bounces, min > max).
+// Throws gib::InputError for impossible settings (zero size or spp, negative bounces, min > max,
+// a replica count that does not divide spp).
 void validateRenderSettings(const RenderSettings& settings);
+
+// The replicas a render of `spp` samples per pixel uses when none are asked for: the largest
+// divisor of spp up to kDefaultMaxReplicas, or spp itself when that is 1 and spp > 1 (then
+// samples are independent and the variance is the classic one). More replicas estimate the
+// variance better (more degrees of freedom), fewer keep more of the low-discrepancy convergence:
+// on the Cornell box's light edges the MSE grows as √replicas (docs/rendering.md, "Error bars").
+inline constexpr std::uint32_t kDefaultMaxReplicas = 8;
+std::uint32_t defaultReplicas(std::uint32_t spp);
+// settings.replicas, or the default when it is 0.
+std::uint32_t replicasOf(const RenderSettings& settings);
+
+// "sobol" or "independent", as the command line and the metadata name them.
+const char* samplerName(SamplerKind kind);
+// Throws gib::InputError naming the choices for any other name.
+SamplerKind parseSamplerName(const std::string& name);
 
 RenderResult renderReference(const scene::Scene& scene, const RenderSettings& settings,
                              const CheckpointCallback& on_checkpoint = {});

@@ -20,18 +20,34 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
   nlohmann::ordered_json parameters = {
       {"spp", s.spp},
       {"seed", s.seed},
+      {"sampler", samplerName(s.sampler)},
+      {"replicas", replicasOf(s)},
       {"min_bounces", s.path_class.min_bounces},
       {"max_bounces", unlimited ? nlohmann::ordered_json("unlimited")
                                 : nlohmann::ordered_json(s.path_class.max_bounces)}};
-  image::Metadata m = scene::outputMetadata(scene, "reference", parameters.dump(), s.width,
-                                             s.height, s.path_class);
+  image::Metadata m =
+      scene::outputMetadata(scene, "reference", parameters.dump(), s.width, s.height, s.path_class);
   m["gibench/spp"] = std::to_string(s.spp);
   m["gibench/seed"] = std::to_string(s.seed);
+  m["gibench/sampler"] = samplerName(s.sampler);
+  m["gibench/replicas"] = std::to_string(replicasOf(s));
   m["gibench/embree_version"] = embreeVersion();
   m["gibench/layers"] =
-      "RGB: mean radiance (linear Rec.709); variance: variance of the per-pixel mean; direct: "
+      "RGB: mean radiance (linear Rec.709); variance: variance of the per-pixel mean, from the "
+      "spread of the replicas' means (Student's t with replicas - 1 degrees of freedom); direct: "
       "paths with at most 1 bounce; indirect: paths with 2 bounces or more";
   return m;
+}
+
+std::uint32_t varianceDegreesOfFreedom(const image::Metadata& metadata) {
+  const auto it = metadata.find("gibench/replicas");
+  if (it == metadata.end()) return 0;
+  try {
+    const unsigned long replicas = std::stoul(it->second);
+    return replicas > 1 ? std::uint32_t(replicas - 1) : 0;
+  } catch (const std::exception&) {
+    return 0;
+  }
 }
 
 void addRunMetadata(image::Metadata& m, const RenderResult& result) {

@@ -15,6 +15,10 @@ namespace gib::ref {
 // parameters, samples, seed, bounce limits, Embree version.
 image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSettings& settings);
 
+// Degrees of freedom of the variance layer of a reference EXR, from its gibench/replicas
+// metadata (replicas − 1); 0 when it has none.
+std::uint32_t varianceDegreesOfFreedom(const image::Metadata& metadata);
+
 // The keys that describe how a run went rather than what it computed: the only ones that differ
 // between two runs of the same command.
 inline constexpr const char* kRunDependentKeys[] = {

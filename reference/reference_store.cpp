@@ -92,7 +92,10 @@ StoredReference loadStored(const fs::path& dir) {
   stored.entry = readStoreEntry(dir);
   const image::ExrFile exr = image::readExr(dir / "reference.exr");
   stored.mean = exr.rgb();
-  if (const image::Image* variance = exr.findLayer("variance")) stored.variance = *variance;
+  if (const image::Image* variance = exr.findLayer("variance")) {
+    stored.variance = *variance;
+    stored.variance_dof = varianceDegreesOfFreedom(exr.metadata);
+  }
   if (stored.mean.width() != stored.entry.spec.width ||
       stored.mean.height() != stored.entry.spec.height)
     throw InputError(
@@ -210,6 +213,7 @@ StoredReference ReferenceStore::obtain(const scene::Scene& scene, const Referenc
   stored.entry.current = true;
   stored.mean = std::move(result.mean);
   stored.variance = std::move(result.variance);
+  stored.variance_dof = result.variance_dof;
   return stored;
 }
 

@@ -62,8 +62,10 @@ struct StoreEntry {
 struct StoredReference {
   StoreEntry entry;
   image::Image mean;
-  image::Image variance;  // of the per-pixel mean; empty when spp < 2
-  bool hit = false;       // found rather than rendered by this call
+  image::Image variance;  // of the per-pixel mean; empty with one replica
+  // Degrees of freedom of `variance` (RenderResult::variance_dof).
+  std::uint32_t variance_dof = 0;
+  bool hit = false;  // found rather than rendered by this call
 };
 
 struct GcResult {

@@ -22,12 +22,15 @@ using namespace gib;
 
 constexpr int kSize = 512;
 
-// Samples and rays per second of the reference renderer at 512×512 on a built-in scene.
+// Samples and rays per second of the reference renderer at 512×512 on a built-in scene;
+// state.range(1) is the sampler (the low-discrepancy default, or independent samples).
 void BM_Reference512(benchmark::State& state, const char* scene_name) {
   const scene::Scene scene = scene::loadScene(scene_name);
   ref::RenderSettings settings;
   settings.width = settings.height = kSize;
   settings.spp = std::uint32_t(state.range(0));
+  settings.sampler = ref::SamplerKind(state.range(1));
+  state.SetLabel(ref::samplerName(settings.sampler));
   std::uint64_t rays = 0;
   for (auto _ : state) {
     ref::RenderResult r = ref::renderReference(scene, settings);
@@ -39,18 +42,15 @@ void BM_Reference512(benchmark::State& state, const char* scene_name) {
       benchmark::Counter(double(state.iterations()) * kSize * kSize * double(state.range(0)),
                          benchmark::Counter::kIsRate);
 }
-BENCHMARK_CAPTURE(BM_Reference512, cornell, "cornell")
-    ->Arg(4)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_Reference512, chamber, "chamber")
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_Reference512, cloud, "cloud")
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+void bothSamplers(benchmark::internal::Benchmark* b, int spp) {
+  b->Args({spp, int(ref::SamplerKind::kSobol)})
+      ->Args({spp, int(ref::SamplerKind::kIndependent)})
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+}
+BENCHMARK_CAPTURE(BM_Reference512, cornell, "cornell")->Apply([](auto* b) { bothSamplers(b, 4); });
+BENCHMARK_CAPTURE(BM_Reference512, chamber, "chamber")->Apply([](auto* b) { bothSamplers(b, 1); });
+BENCHMARK_CAPTURE(BM_Reference512, cloud, "cloud")->Apply([](auto* b) { bothSamplers(b, 1); });
 
 struct Ray {
   glm::vec3 origin, direction;

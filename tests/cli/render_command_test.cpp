@@ -41,6 +41,10 @@ TEST(RenderCommand, WritesExrWithLayersAndMetadataAndPng) {
                           "gibench/rays_per_second", "gibench/technique"})
     EXPECT_TRUE(exr.metadata.count(key)) << key;
   EXPECT_EQ(exr.metadata["gibench/spp"], "4");
+  // Four samples: four replicas of one, whose spread is the variance (3 degrees of freedom).
+  EXPECT_EQ(exr.metadata["gibench/sampler"], "sobol");
+  EXPECT_EQ(exr.metadata["gibench/replicas"], "4");
+  EXPECT_NE(r.out.find("from 4 replicas of 1 spp (3 degrees of freedom)"), std::string::npos);
   EXPECT_EQ(exr.metadata["gibench/scene"], "cornell");
   // Checkpoints at 1, 2 and 4 spp.
   for (const char* name : {"cornell.spp0001.exr", "cornell.spp0002.exr", "cornell.spp0004.exr"})
@@ -129,6 +133,15 @@ INSTANTIATE_TEST_SUITE_P(
                  {"render", "--scene", "cornell", "--min-bounces", "3", "--max-bounces", "1",
                   "--out", "OUT"},
                  "--min-bounces"},
+        BadInput{"replicas_not_dividing_spp",
+                 {"render", "--scene", "cornell", "--spp", "8", "--replicas", "3", "--out", "OUT"},
+                 "--replicas 3 does not divide --spp 8"},
+        BadInput{"replicas_above_spp",
+                 {"render", "--scene", "cornell", "--spp", "8", "--replicas", "16", "--out", "OUT"},
+                 "--replicas"},
+        BadInput{"unknown_sampler",
+                 {"render", "--scene", "cornell", "--sampler", "halton", "--out", "OUT"},
+                 "halton"},
         BadInput{"non_numeric_spp",
                  {"render", "--scene", "cornell", "--spp", "many", "--out", "OUT"},
                  "spp"},

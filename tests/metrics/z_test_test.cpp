@@ -59,6 +59,76 @@ TEST(ZTest, RejectsABiasedImage) {
   }
 }
 
+// A per-pixel mean of `replicas` normal replica means, and its variance estimated from their
+// spread (replicas − 1 degrees of freedom), as the reference renderer estimates it.
+struct ReplicaEstimate {
+  image::Image mean, variance;
+};
+ReplicaEstimate replicaEstimate(std::uint64_t seed, int replicas) {
+  ReplicaEstimate e{image::Image(kSize, kSize), image::Image(kSize, kSize)};
+  const double replica_sd = kStandardError * std::sqrt(double(replicas));
+  for (std::uint32_t i = 0; i < e.mean.data().size(); ++i) {
+    ref::SampleStream random(seed, i, 0);
+    const double truth = 0.5 + 0.3 * std::sin(0.1 * i);
+    double sum = 0, sum_squares = 0;
+    for (int r = 0; r < replicas; ++r) {
+      const double x = truth + replica_sd * gaussian(random);
+      sum += x;
+      sum_squares += x * x;
+    }
+    const double mean = sum / replicas;
+    e.mean.data()[i] = float(mean);
+    e.variance.data()[i] =
+        float((sum_squares - replicas * mean * mean) / (replicas - 1) / replicas);
+  }
+  return e;
+}
+
+TEST(ZTest, EstimatedVariancesNeedTheirDegreesOfFreedom) {
+  // Variances from 8 replicas (7 dof each). Read as exact, the statistic's tails are Student's,
+  // far heavier than the normal's: most unbiased trials fail. With the degrees of freedom given,
+  // the rejection rate is the stated 1% (more than 8 of 200 has probability ≈ 0.1%).
+  ZTestOptions with_dof;
+  with_dof.reference_variance_dof = with_dof.test_variance_dof = 7;
+  int rejected_as_exact = 0, rejected_with_dof = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const ReplicaEstimate a = replicaEstimate(100 + trial, 8), b = replicaEstimate(700 + trial, 8);
+    rejected_as_exact += !zTest(a.mean, a.variance, b.mean, b.variance).passed;
+    rejected_with_dof += !zTest(a.mean, a.variance, b.mean, b.variance, with_dof).passed;
+  }
+  EXPECT_LE(rejected_with_dof, 8);
+  EXPECT_GT(rejected_as_exact, 100);
+}
+
+TEST(ZTest, DifferencePValueIsStudentsTWithWelchDegreesOfFreedom) {
+  // Equal variances of equal dof ν: Welch gives 2ν, so |t| = 2.145 is the two-sided 5% point
+  // of t₁₄ for ν = 7; exact variances give the normal's 1.96.
+  EXPECT_NEAR(differencePValue(2.1448 * std::sqrt(2.0), 1, 7, 1, 7), 0.05, 1e-4);
+  EXPECT_NEAR(differencePValue(1.95996, 1, 0, 0, 0), 0.05, 1e-5);
+  // One exact variance holding half the total: (1 + 1)² / (1²/7) = 28 dof, whose 5% point is
+  // 2.048.
+  EXPECT_NEAR(differencePValue(2.0484 * std::sqrt(2.0), 1, 7, 1, 0), 0.05, 1e-4);
+}
+
+TEST(ZTest, BlocksAverageIndependentPixelsAndTheirVariances) {
+  // 2×2 blocks of a 4×2 image: two blocks. Each block's mean difference is the average of its
+  // pixels', its variance the sum over n² (n = 4), so a uniform offset of 1 with per-pixel
+  // variance 1 becomes z = 1 / √(4/16) = 2 per block.
+  const image::Image reference(4, 2, 3, 0.0f), variance(4, 2, 3, 1.0f);
+  const image::Image test(4, 2, 3, 1.0f);
+  ZTestOptions blocks;
+  blocks.block = 2;
+  const ZTestResult r = zTest(reference, variance, test, image::Image(), blocks);
+  EXPECT_EQ(r.tested, 2u * 3u);
+  EXPECT_NEAR(r.min_p_value, std::erfc(2 / std::sqrt(2.0)), 1e-12);
+  // The map gives each pixel its block's p-value.
+  EXPECT_FLOAT_EQ(r.p_values.pixel(3, 1)[0], float(std::erfc(2 / std::sqrt(2.0))));
+  // A partial block at the edge averages the pixels it has.
+  ZTestOptions wide;
+  wide.block = 3;
+  EXPECT_EQ(zTest(reference, variance, test, image::Image(), wide).tested, 2u * 3u);
+}
+
 TEST(ZTest, ToleratesAStatedFractionOfFailures) {
   const image::Image variance(kSize, kSize, 3, float(kStandardError * kStandardError));
   const image::Image reference = estimate(1, 0.0);

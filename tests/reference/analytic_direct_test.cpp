@@ -61,8 +61,9 @@ Estimate estimateFloorRadiance(const PathTracer& tracer, glm::vec3 p, std::uint3
                                std::uint32_t pixel_id) {
   double sum = 0, sum_squares = 0;
   for (std::uint32_t s = 0; s < samples; ++s) {
-    SampleStream random(1234, pixel_id, s);
-    RadianceSample r = tracer.radiance(p + glm::vec3(0, 0.25f, 0), {0, -1, 0}, random);
+    // One replica per sample: independent samples, so their spread gives the standard error.
+    PathSampler sampler(1234, pixel_id, s, samples);
+    RadianceSample r = tracer.radiance(p + glm::vec3(0, 0.25f, 0), {0, -1, 0}, sampler);
     sum += r.total.r;
     sum_squares += double(r.total.r) * r.total.r;
   }

@@ -1,7 +1,7 @@
 // The furnace: every pixel's exact radiance is 1.0 (L = Le / (1 − ρ) with Le = ρ = 0.5).
-#include "metrics/distributions.h"
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"
+#include "support/render_statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -10,21 +10,7 @@
 namespace gib::ref {
 namespace {
 
-struct ImageMean {
-  double mean = 0;
-  double standard_error = 0;
-};
-
-// The mean over all pixels and channels; pixels are independent, so its variance is Σ var / N².
-ImageMean imageMean(const RenderResult& r) {
-  double sum = 0, sum_variance = 0;
-  for (std::size_t i = 0; i < r.mean.data().size(); ++i) {
-    sum += r.mean.data()[i];
-    sum_variance += r.variance.data()[i];
-  }
-  const double n = double(r.mean.data().size());
-  return {sum / n, std::sqrt(sum_variance) / n};
-}
+using test::imageMean;
 
 TEST(Furnace, EveryPixelIsOneWithinItsStandardError) {
   const scene::Scene furnace = scene::loadScene("furnace");
@@ -33,17 +19,19 @@ TEST(Furnace, EveryPixelIsOneWithinItsStandardError) {
   settings.spp = 256;
   const RenderResult r = renderReference(furnace, settings);
 
-  // Per pixel and channel, a two-sided Z-test. With 768 tests, a family-wise significance of 1%
-  // under the Šidák correction needs |z| below ~4.2; the 3-standard-error bound would
-  // fail by chance on ~2 pixels, so it is applied to the image mean instead (below).
+  // Per pixel and channel, a two-sided test of (mean − 1)/standard error, which follows Student's
+  // t with the replicas' degrees of freedom (7 here). With 768 tests, a family-wise significance
+  // of 1% under the Šidák correction needs |t| below ~10.8; a 3-standard-error bound would fail
+  // by chance on ~15 values, so it is applied to the image mean instead (below).
+  ASSERT_EQ(r.variance_dof, 7u);
   const double tests = 3.0 * r.mean.pixelCount();
-  const double z_max = metrics::normalQuantile(1 - metrics::sidakSignificance(0.01, tests) / 2);
+  const double t_max = test::familyWiseBound(r, tests, 0.01);
   for (std::size_t i = 0; i < r.mean.data().size(); ++i) {
     double variance = r.variance.data()[i];
     ASSERT_GT(variance, 0.0) << "the estimator is not deterministic here";
-    EXPECT_LT(std::abs(r.mean.data()[i] - 1.0), z_max * std::sqrt(variance)) << "value " << i;
+    EXPECT_LT(std::abs(r.mean.data()[i] - 1.0), t_max * std::sqrt(variance)) << "value " << i;
   }
-  const ImageMean m = imageMean(r);
+  const test::ImageMean m = imageMean(r);
   EXPECT_NEAR(m.mean, 1.0, 3 * m.standard_error) << "± " << m.standard_error;
   EXPECT_LT(m.standard_error, 0.01);
 }
@@ -56,7 +44,7 @@ TEST(Furnace, BounceLimitedRadianceIsTheGeometricSeries) {
     settings.width = settings.height = 8;
     settings.spp = 256;
     settings.path_class.max_bounces = k;
-    const ImageMean m = imageMean(renderReference(furnace, settings));
+    const test::ImageMean m = imageMean(renderReference(furnace, settings));
     const double expected = 1.0 - std::pow(0.5, k + 1);
     EXPECT_NEAR(m.mean, expected, 3 * m.standard_error + 1e-6) << "k = " << k;
   }

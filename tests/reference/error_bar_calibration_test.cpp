@@ -1,0 +1,105 @@
+// The reference's error bars are calibrated: the variance layer (from the spread of independently
+// scrambled replicas) says how far a pixel may be from the truth, and it is right as often as
+// its distribution says. Checked on a scene with a known answer (the furnace: every pixel is
+// exactly 1) and on the Cornell box against a render four times longer (whose own error is in
+// the statistic). Each count of pixels
+// beyond a bound is tested against its binomial distribution at significance 0.001.
+#include "metrics/distributions.h"
+#include "metrics/z_test.h"
+#include "reference/progressive_renderer.h"
+#include "scene/builtin_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+namespace gib::ref {
+namespace {
+
+// Two-sided p-value of `count` successes in `n` trials of probability p (twice the smaller
+// tail, at most 1).
+double binomialPValue(std::size_t count, std::size_t n, double p) {
+  // P(X ≥ k) = I_p(k, n − k + 1); P(X ≤ k) = 1 − P(X ≥ k + 1).
+  auto at_least = [&](std::size_t k) {
+    return k == 0 ? 1.0 : metrics::regularizedBetaI(double(k), double(n - k + 1), p);
+  };
+  const double upper = at_least(count), lower = 1.0 - at_least(count + 1);
+  return std::min(1.0, 2.0 * std::min(upper, lower));
+}
+
+// The normal's two-sided tail beyond ±2 and ±3 standard errors: the fractions of pixels a
+// calibrated error bar leaves outside, once each statistic is mapped to the normal through its
+// own distribution (its p-value).
+constexpr double kBeyondTwo = 0.045500263896358;
+constexpr double kBeyondThree = 0.002699796063260;
+
+// Counts the values whose p-value is below each bound, and tests both counts.
+void expectCalibrated(const std::vector<double>& p_values, const char* what) {
+  for (double bound : {kBeyondTwo, kBeyondThree}) {
+    std::size_t beyond = 0;
+    for (double p : p_values) beyond += p < bound;
+    const double p_value = binomialPValue(beyond, p_values.size(), bound);
+    EXPECT_GT(p_value, 0.001) << what << ": " << beyond << " of " << p_values.size()
+                              << " beyond the normal's " << bound << " tail, expected "
+                              << bound * double(p_values.size());
+    std::printf("%s: %zu of %zu values beyond the %.4f tail (expected %.1f; binomial p %.3f)\n",
+                what, beyond, p_values.size(), bound, bound * double(p_values.size()), p_value);
+  }
+}
+
+TEST(ErrorBarCalibration, FurnacePixelsMissTheTruthAsOftenAsTheirErrorBarsSay) {
+  const scene::Scene furnace = scene::loadScene("furnace");
+  RenderSettings settings;
+  settings.width = settings.height = 48;
+  // 8 replicas of 512 samples. Far fewer samples do not do: the furnace's paths are skewed
+  // (skewness 4.7 per sample, from Russian roulette's rare survivors), and a replica mean that
+  // missed the rare long paths has both a low mean and a low spread, so at 256 spp 5-9 times too
+  // many pixels fall beyond 3 standard errors, on the low side (docs/rendering.md, "Error bars").
+  settings.spp = 4096;
+  const RenderResult r = renderReference(furnace, settings);
+  // One channel: the furnace is grey, so a pixel's three channels are one value.
+  std::vector<double> p_values;
+  for (std::size_t i = 0; i < r.mean.pixelCount(); ++i)
+    p_values.push_back(metrics::differencePValue(
+        r.mean.data()[3 * i] - 1.0, r.variance.data()[3 * i], r.variance_dof, 0.0, 0.0));
+  expectCalibrated(p_values, "furnace");
+
+  // Read as a normal standard error, the same variance leaves too many pixels outside ±3
+  // (Student's t₇ puts 2% there, not 0.27%): the degrees of freedom are part of the error bar.
+  std::size_t beyond_three = 0;
+  for (std::size_t i = 0; i < r.mean.pixelCount(); ++i)
+    beyond_three += std::abs(r.mean.data()[3 * i] - 1.0) > 3 * std::sqrt(r.variance.data()[3 * i]);
+  EXPECT_LT(binomialPValue(beyond_three, r.mean.pixelCount(), kBeyondThree), 0.001)
+      << beyond_three << " beyond ±3 standard errors";
+}
+
+TEST(ErrorBarCalibration, CornellPixelsMissALongerRenderAsOftenAsTheirErrorBarsSay) {
+  const scene::Scene cornell = scene::loadScene("cornell");
+  RenderSettings truth_settings;
+  truth_settings.width = 48;
+  truth_settings.height = 36;
+  truth_settings.spp = 4096;
+  truth_settings.seed = 1;
+  const RenderResult truth = renderReference(cornell, truth_settings);
+  RenderSettings settings = truth_settings;
+  settings.spp = 1024;
+  settings.seed = 2;
+  const RenderResult r = renderReference(cornell, settings);
+  // One channel (green), so the values are independent; the longer render's own variance is in
+  // the test's.
+  std::vector<double> p_values;
+  for (std::size_t i = 0; i < r.mean.pixelCount(); ++i) {
+    const std::size_t g = 3 * i + 1;
+    if (r.variance.data()[g] + truth.variance.data()[g] <= 0) continue;
+    p_values.push_back(metrics::differencePValue(r.mean.data()[g] - truth.mean.data()[g],
+                                                 r.variance.data()[g], r.variance_dof,
+                                                 truth.variance.data()[g], truth.variance_dof));
+  }
+  // A quarter of the image looks out of the open box at nothing: zero variance, not tested.
+  EXPECT_GT(p_values.size(), 1200u);
+  expectCalibrated(p_values, "cornell");
+}
+
+}  // namespace
+}  // namespace gib::ref
