@@ -18,5 +18,6 @@ CommandRunner addDiffCommand(CLI::App& app);
 CommandRunner addHistoryCommand(CLI::App& app);
 CommandRunner addStoreCommand(CLI::App& app);
 CommandRunner addReportCommand(CLI::App& app);
+CommandRunner addExportBlenderCommand(CLI::App& app);
 
 }  // namespace gib::cli

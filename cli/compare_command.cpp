@@ -5,6 +5,7 @@
 #include "image/display.h"
 #include "image/exr_io.h"
 #include "metrics/error_map_display.h"
+#include "metrics/mean_bias.h"
 #include "metrics/metric_registry.h"
 
 #include <fmt/format.h>
@@ -46,22 +47,14 @@ void writeMaps(const fs::path& dir, const metrics::MetricReport& report,
   }
 }
 
-image::Image loadRgb(const std::string& path, const char* role) {
-  image::ExrFile file = image::readExr(path);
-  const image::Image* rgb = file.findLayer("");
-  if (!rgb)
-    throw InputError(
-        fmt::format("{} image '{}' has no R, G, B channels; give an RGB EXR", role, path));
-  return *rgb;
-}
-
 int runCompare(const CompareOptions& o) {
   const std::vector<std::string> names = metrics::parseMetricList(o.metrics);
   if (!(o.pixels_per_degree > 0))
     throw InputError("--ppd must be positive (67 is a 0.7 m wide 4K monitor seen from 0.7 m)");
   if (!(o.epsilon > 0)) throw InputError("--epsilon must be positive");
-  const image::Image reference = loadRgb(o.reference, "reference");
-  const image::Image test = loadRgb(o.test, "test");
+  // By channel name, so RGBA files (Blender's, other renderers') compare like RGB ones.
+  const image::Image reference = image::readRgb(o.reference);
+  const image::Image test = image::readRgb(o.test);
   if (reference.width() != test.width() || reference.height() != test.height())
     throw InputError(fmt::format(
         "reference is {}x{} but test is {}x{}; render both at the same --width and --height",
@@ -77,6 +70,8 @@ int runCompare(const CompareOptions& o) {
   options.relative_epsilon = o.epsilon;
   options.reject_outliers = o.reject_outliers;
   const metrics::MetricReport report = metrics::evaluateMetrics(reference, test, names, options);
+  // Beside the metrics: two renderers agree on a scene only if these agree (metrics/mean_bias.h).
+  const metrics::ChannelMeans means = metrics::computeChannelMeans(reference, test);
 
   if (!o.maps.empty()) {
     image::Metadata metadata = {{"gibench/program", kProgramName},
@@ -92,6 +87,7 @@ int runCompare(const CompareOptions& o) {
       j["metrics"][name] = std::isfinite(value) ? nlohmann::ordered_json(value)
                                                 : nlohmann::ordered_json(fmt::format("{}", value));
     j["nonfinite"] = report.nonfinite_pixels;
+    j["means"] = {{"reference", means.reference}, {"test", means.test}};
     j["width"] = reference.width();
     j["height"] = reference.height();
     j["reference"] = o.reference;
@@ -104,6 +100,10 @@ int runCompare(const CompareOptions& o) {
   fmt::print("{:<16} {}\n", "metric", "value");
   for (const auto& [name, value] : report.values) fmt::print("{:<16} {:.6g}\n", name, value);
   fmt::print("{:<16} {}\n", "nonfinite", report.nonfinite_pixels);
+  fmt::print("{:<16} {:.6g} {:.6g} {:.6g}\n", "reference mean", means.reference[0],
+             means.reference[1], means.reference[2]);
+  fmt::print("{:<16} {:.6g} {:.6g} {:.6g}\n", "test mean", means.test[0], means.test[1],
+             means.test[2]);
   if (!o.maps.empty()) fmt::print("maps in {}\n", o.maps);
   return 0;
 }

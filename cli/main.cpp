@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addHistoryCommand, "history");
   add(&gib::cli::addStoreCommand, "store");
   add(&gib::cli::addReportCommand, "report");
+  add(&gib::cli::addExportBlenderCommand, "export-blender");
 
   try {
     app.parse(argc, argv);

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "common/input_error.h"
+#include "common/join.h"
 #include "image/atomic_write.h"
 
 namespace gib::image {
@@ -272,6 +273,28 @@ ExrFile readExr(const fs::path& path) {
   file.layers = scatter(spec, values, groupChannels(spec.channelnames));
   file.metadata = readMetadata(spec);
   return file;
+}
+
+Image readRgb(const fs::path& path) {
+  const ExrFile file = readExr(path);
+  const Image* main = file.findLayer("");
+  if (!main) {
+    // Without a complete R, G, B set, readExr left each of those present as a layer of its own.
+    std::vector<std::string> missing;
+    for (const char* name : {"R", "G", "B"})
+      if (!file.findLayer(name)) missing.emplace_back(name);
+    throw InputError("'" + path.string() + "' has no " + joinNames(missing, ", ") + " channel" +
+                     (missing.size() > 1 ? "s" : "") +
+                     "; give an EXR whose main layer has R, G and B channels (alpha may be there)");
+  }
+  if (main->channels() == 3) return *main;
+  Image rgb(main->width(), main->height(), 3);
+  const auto channels = std::size_t(main->channels());
+  const std::span<const float> source = main->data();
+  const std::span<float> target = rgb.data();
+  for (std::size_t p = 0; p < main->pixelCount(); ++p)
+    std::copy_n(source.data() + p * channels, 3, target.data() + p * 3);
+  return rgb;
 }
 
 }  // namespace gib::image

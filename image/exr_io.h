@@ -54,4 +54,10 @@ void writeExr(const std::filesystem::path& path, const std::vector<Layer>& layer
 // missing, unreadable, truncated, deep or non-EXR file throws gib::InputError.
 ExrFile readExr(const std::filesystem::path& path);
 
+// The main layer's R, G and B channels, found by name, as a 3-channel image: alpha and every other
+// channel are left out, so an RGBA file (what Blender and most renderers write) reads like the
+// same file without alpha, and a luminance file gives grey as in readExr. Throws gib::InputError
+// naming the missing channels when the file has no R, G and B (or Y), besides readExr's errors.
+Image readRgb(const std::filesystem::path& path);
+
 }  // namespace gib::image

@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "common/join.h"
+#include "metrics/mean_bias.h"
 #include "metrics/ssim.h"
 
 #include <fmt/format.h>
@@ -89,6 +90,11 @@ const std::vector<MetricEntry>& entries() {
         "lost or gained)",
         single("energy_ratio", MetricDirection::kTowardOne)},
        scalar("energy_ratio", [](auto& r, auto& t, auto&) { return computeEnergyRatio(r, t); })},
+      {{"block_bias",
+        "largest relative difference of a channel's 16x16 block means (blocks under 1% of the "
+        "image mean left out): bias that pixel noise hides",
+        single("block_bias")},
+       scalar("block_bias", [](auto& r, auto& t, auto&) { return computeBlockBias(r, t); })},
       {{"ssim", "SSIM of display luminance (11x11 Gaussian window, sigma 1.5)",
         single("ssim", kHigher)},
        scalar("ssim", [](auto& r, auto& t, auto&) { return computeSsim(r, t); })},

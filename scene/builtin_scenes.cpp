@@ -21,7 +21,7 @@ const std::vector<BuiltinScene>& registry() {
       {{"cornell",
         "the Cornell box as published by the Cornell Program of Computer Graphics (mm, spectral "
         "reflectances converted to Rec.709)",
-        {}},
+        cornellParameters()},
        &makeCornellBox},
       {{"furnace",
         "inside a closed sphere with albedo 0.5 and emission 0.5: every pixel's exact radiance "

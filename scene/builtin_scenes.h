@@ -26,6 +26,7 @@ Scene loadScene(std::string_view name_or_path, const std::vector<std::string>& p
 
 // The built-in scenes, each in its own file.
 Scene makeCornellBox(const ParameterValues& parameters);
+ParameterTable cornellParameters();
 Scene makeFurnace(const ParameterValues& parameters);
 Scene makeChamber(const ParameterValues& parameters);
 ParameterTable chamberParameters();

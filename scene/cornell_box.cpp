@@ -45,7 +45,15 @@ void addBlock(Mesh& mesh, const glm::vec3 (&quads)[5][4]) {
 
 }  // namespace
 
-Scene makeCornellBox(const ParameterValues&) {
+ParameterTable cornellParameters() {
+  return {
+      choiceParameter("blocks", "true", {"true", "false"},
+                      "the short and the tall block (false: the empty box, whose walls alone "
+                      "make a simpler test scene)"),
+  };
+}
+
+Scene makeCornellBox(const ParameterValues& parameters) {
   Scene scene;
   scene.name = "cornell";
   scene.provenance =
@@ -115,8 +123,10 @@ Scene makeCornellBox(const ParameterValues&) {
                                               {265.0f, 330.0f, 296.0f},
                                               {423.0f, 330.0f, 247.0f},
                                               {423.0f, 0.0f, 247.0f}}};
-  addBlock(addMesh(scene, "short_block", white_id), kShortBlock);
-  addBlock(addMesh(scene, "tall_block", white_id), kTallBlock);
+  if (parameters.text("blocks") == "true") {
+    addBlock(addMesh(scene, "short_block", white_id), kShortBlock);
+    addBlock(addMesh(scene, "tall_block", white_id), kTallBlock);
+  }
 
   // Focal length 35 mm on a 25 × 25 mm film: vertical field of view 2·atan(12.5/35) ≈ 39.3077°.
   scene.camera.position = {278.0f, 273.0f, -800.0f};

@@ -21,6 +21,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # Report tests: headless browser
   chromium
+  # The cross-check against Cycles (scripts/cross-check-cycles.sh) and its test
+  blender
 )
 
 missing=()

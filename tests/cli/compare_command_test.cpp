@@ -32,8 +32,8 @@ TEST(CompareCommand, PrintsOneJsonObjectWithEveryMetric) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["nonfinite"], 1);
-  for (const char* key : {"mse", "rmse", "mae", "relmse", "mape", "smape", "psnr", "ssim",
-                          "flip_mean", "flip_median", "flip_q1", "flip_q3", "hdrflip_mean"})
+  for (const char* key : {"mse", "rmse", "mae", "relmse", "mape", "smape", "psnr", "block_bias",
+                          "ssim", "flip_mean", "flip_median", "flip_q1", "flip_q3", "hdrflip_mean"})
     EXPECT_TRUE(j["metrics"].contains(key)) << key;
   // The offset is 0.05 on every finite pixel.
   EXPECT_NEAR(j["metrics"]["mae"].get<double>(), 0.05, 1e-5);
@@ -55,6 +55,47 @@ TEST(CompareCommand, SelectedMetricsAndMapsAsExrAndPng) {
   image::ExrFile map = image::readExr(dir / "maps" / "relmse.exr");
   ASSERT_EQ(map.layers.size(), 1u);
   EXPECT_EQ(map.layers[0].image.channels(), 1);
+}
+
+TEST(CompareCommand, ReadsTheRgbOfRgbaFiles) {
+  // Blender writes RGBA; alpha (here 0.25, not 1) must not enter any figure.
+  TempDir dir;
+  image::Image rgb(24, 16), rgba(24, 16, 4);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 24; ++x)
+      for (int c = 0; c < 4; ++c) {
+        const float value = 0.1f * float(c + 1) + 0.01f * float(x + 3 * y);
+        if (c < 3) rgb.pixel(x, y)[c] = value;
+        rgba.pixel(x, y)[c] = c < 3 ? value : 0.25f;
+      }
+  image::writeExr(dir / "rgb.exr", {{"", rgb}}, {});
+  image::writeExr(dir / "rgba.exr", {{"", rgba}}, {});
+  CommandResult r = runGibench({"compare", (dir / "rgb.exr").string(), (dir / "rgba.exr").string(),
+                                "--metrics", "mae", "--json"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["metrics"]["mae"].get<double>(), 0.0);
+  EXPECT_EQ(j["means"]["test"], j["means"]["reference"]);
+  // Mean of R: 0.1 + 0.01·(mean of x + 3y) = 0.1 + 0.01·(11.5 + 22.5).
+  EXPECT_NEAR(j["means"]["test"][0].get<double>(), 0.44, 1e-6);
+}
+
+TEST(CompareCommand, EveryChannelOfRgbIsRequired) {
+  TempDir dir;
+  writeImage(dir / "ref.exr", 4, 3, 0.5f);
+  // An EXR of R, G and A only, made by another writer (ours always writes R, G and B).
+  CommandResult made =
+      runProgram({"oiiotool", "--pattern", "constant:color=0.1,0.2,0.3", "4x3", "3", "--chnames",
+                  "R,G,A", "-d", "float", "-o", (dir / "no_blue.exr").string()},
+                 dir.path());
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  CommandResult r = runGibench(
+      {"compare", (dir / "ref.exr").string(), (dir / "no_blue.exr").string()}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(countLines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("no B channel"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
 TEST(CompareCommand, BadInputExitsWithCodeTwoAndOneLine) {

@@ -135,6 +135,42 @@ TEST(ExrIo, ReadsPlainRgbaFileFromOpenImageIO) {
   EXPECT_TRUE(file.metadata.empty());  // DateTime and other standard attributes are not ours.
 }
 
+TEST(ExrIo, ReadRgbTakesRgbByNameAndLeavesAlphaOut) {
+  // Blender's layout: R, G, B and an alpha that is not 1.
+  const test::TempDir dir;
+  OIIO::ImageSpec spec(3, 2, 4, OIIO::TypeFloat);
+  spec.channelnames = {"R", "G", "B", "A"};
+  std::vector<float> values(3 * 2 * 4);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = 0.5f + float(i) * 0.125f;
+  writeWithOiio(dir / "rgba.exr", spec, values);
+
+  const Image rgb = readRgb(dir / "rgba.exr");
+  ASSERT_EQ(rgb.channels(), 3);
+  ASSERT_EQ(rgb.pixelCount(), 6u);
+  for (std::size_t p = 0; p < rgb.pixelCount(); ++p)
+    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(rgb.data()[p * 3 + c], values[p * 4 + c]);
+}
+
+TEST(ExrIo, ReadRgbNamesTheMissingChannels) {
+  const test::TempDir dir;
+  auto readRgbError = [](const fs::path& path) -> std::string {
+    try {
+      readRgb(path);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "no InputError";
+  };
+  OIIO::ImageSpec spec(2, 1, 3, OIIO::TypeFloat);
+  spec.channelnames = {"R", "G", "A"};
+  writeWithOiio(dir / "no_blue.exr", spec, {1, 2, 3, 4, 5, 6});
+  const std::string no_blue = readRgbError(dir / "no_blue.exr");
+  EXPECT_THAT(no_blue, HasSubstr("no_blue.exr' has no B channel;"));
+  EXPECT_EQ(no_blue.find('\n'), std::string::npos);  // one line
+  writeExr(dir / "variance.exr", {{"variance", Image(2, 2)}}, {});
+  EXPECT_THAT(readRgbError(dir / "variance.exr"), HasSubstr("has no R, G, B channels;"));
+}
+
 TEST(ExrIo, ReadsLuminanceFileAsGreyRgb) {
   const test::TempDir dir;
   OIIO::ImageSpec spec(2, 1, 1, OIIO::TypeFloat);

@@ -31,6 +31,17 @@ TEST(CornellBox, HasThePublishedGeometryAndCamera) {
   EXPECT_NEAR(light_area, 130.0f * 105.0f, 1e-2f);
 }
 
+TEST(CornellBox, BlocksCanBeLeftOutWithoutChangingTheDefaultScene) {
+  const Scene with = loadScene("cornell");
+  const Scene without = loadScene("cornell", {"blocks=false"});
+  EXPECT_EQ(with.triangleCount(), 32u);
+  EXPECT_EQ(without.triangleCount(), 12u);  // five walls and the light
+  // The default is the published box: its hash, which keys stored references, is unchanged.
+  EXPECT_EQ(hashScene(with), hashScene(loadScene("cornell", {"blocks=true"})));
+  EXPECT_NE(hashScene(with), hashScene(without));
+  EXPECT_THROW(loadScene("cornell", {"blocks=no"}), InputError);
+}
+
 TEST(CornellBox, RedWallIsOnTheLeftOfTheImage) {
   // Right-handed world, camera looking +z: +x is image left, where the published red wall is.
   const Scene s = loadScene("cornell");

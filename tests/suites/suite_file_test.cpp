@@ -299,7 +299,7 @@ TEST_F(SuiteFileTest, SceneParametersAreChecked) {
   const std::string none = replaced(kSuite, "technique = \"reference\"",
                                     "technique = \"reference\"\nscene_set = { detail = 2 }");
   EXPECT_THAT(expectErrorAt(none, "detail = 2"),
-              HasSubstr("scene 'cornell' has no parameter 'detail'; it takes none"));
+              HasSubstr("scene 'cornell' has no parameter 'detail'; its parameters are blocks"));
   const std::string chamber = replaced(
       replaced(kSuite, "scene = \"cornell\"", "scene = \"chamber\""), "technique = \"reference\"",
       "technique = \"reference\"\nscene_set = { detail = 9 }");

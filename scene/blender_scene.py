@@ -1,0 +1,272 @@
+# The fixed part of a script written by `gibench export-blender` (scene/blender_export.cpp writes
+# the scene's data, SCENE, above it): builds the scene in an empty Blender file and renders it
+# with Cycles on the CPU into a 32-bit float linear RGBA EXR. The exporter has already converted
+# every unit and convention, so this part only copies numbers into Blender; what it adds are the
+# render settings, each chosen so that Cycles estimates the same integral as GI Bench's reference
+# without bias or post-processing (the comments say which default would change the image).
+#
+# Usage: blender -b --factory-startup --python-exit-code 3 --python SCRIPT -- OUT.exr
+#                [--spp N] [--seed S] [--no-light-sampling]
+# --spp and --seed replace the exported ones (a second, independent render of the same scene).
+# --no-light-sampling leaves emissive meshes to BSDF sampling alone: far noisier, but without the
+# darkening of Blender 3.4's light sampling where an emitter is seen at a grazing angle (measured
+# in docs/cycles-cross-check.md).
+
+import math
+import os
+import sys
+
+import bpy
+from mathutils import Matrix, Vector
+
+USAGE = ("blender -b --factory-startup --python SCRIPT -- OUT.exr [--spp N] [--seed S] "
+         "[--no-light-sampling]")
+
+
+def fail(message):
+    # One line and exit code 2, as gibench does for bad input.
+    print(f"gibench blender script: {message}; usage: {USAGE}", file=sys.stderr)
+    sys.exit(2)
+
+
+def parse_arguments(render):
+    args = sys.argv[sys.argv.index("--") + 1 :] if "--" in sys.argv else []
+    out = None
+    while args:
+        arg = args.pop(0)
+        if arg == "--no-light-sampling":
+            render["light_sampling"] = False
+        elif arg in ("--spp", "--seed"):
+            if not args or not args[0].isdigit():
+                fail(f"{arg} needs a non-negative integer")
+            render[arg[2:]] = int(args.pop(0))
+        elif arg.startswith("-") or out is not None:
+            fail(f"unexpected argument '{arg}'")
+        else:
+            out = arg
+    if out is None:
+        fail("no output EXR given after '--'")
+    if render["spp"] < 1:
+        fail("--spp must be at least 1")
+    if render["seed"] > 2**31 - 1:
+        fail("--seed must be below 2^31 (Cycles' range)")
+    return os.path.abspath(out)
+
+
+def empty_file():
+    # --factory-startup opens the default scene (cube, lamp, camera): remove all of it.
+    for blocks in (bpy.data.objects, bpy.data.meshes, bpy.data.materials, bpy.data.lights,
+                   bpy.data.cameras, bpy.data.worlds):
+        for block in list(blocks):
+            blocks.remove(block)
+    return bpy.context.scene
+
+
+def rgba(rgb):
+    return (rgb[0], rgb[1], rgb[2], 1.0)
+
+
+def make_material(spec, light_sampling):
+    material = bpy.data.materials.new(spec["name"])
+    material.cycles.sample_as_light = light_sampling
+    material.use_nodes = True
+    nodes, links = material.node_tree.nodes, material.node_tree.links
+    nodes.clear()
+    output = nodes.new("ShaderNodeOutputMaterial")
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = rgba(spec["diffuse"])
+    diffuse.inputs["Roughness"].default_value = 0.0  # Oren–Nayar with σ = 0 is Lambert
+    surface = diffuse.outputs["BSDF"]
+    if spec["glossy"] is not None:
+        glossy = nodes.new("ShaderNodeBsdfGlossy")
+        glossy.distribution = "BECKMANN"
+        glossy.inputs["Color"].default_value = rgba(spec["glossy"]["color"])
+        glossy.inputs["Roughness"].default_value = spec["glossy"]["roughness"]
+        both = nodes.new("ShaderNodeAddShader")
+        links.new(surface, both.inputs[0])
+        links.new(glossy.outputs["BSDF"], both.inputs[1])
+        surface = both.outputs["Shader"]
+    if spec["emission"] is not None:
+        # Cycles' mesh emitters shine from both sides; GI Bench's from the front face only, the
+        # side (b − a) × (c − a) points to, which is also the side Cycles calls front. The back
+        # face keeps the reflection and loses the emission.
+        emission = nodes.new("ShaderNodeEmission")
+        emission.inputs["Color"].default_value = rgba(spec["emission"])
+        emission.inputs["Strength"].default_value = 1.0  # radiance = colour · strength
+        front = nodes.new("ShaderNodeAddShader")
+        links.new(emission.outputs["Emission"], front.inputs[0])
+        links.new(surface, front.inputs[1])
+        geometry = nodes.new("ShaderNodeNewGeometry")
+        sides = nodes.new("ShaderNodeMixShader")
+        links.new(geometry.outputs["Backfacing"], sides.inputs["Fac"])
+        links.new(front.outputs["Shader"], sides.inputs[1])  # Fac 0: the front face
+        links.new(surface, sides.inputs[2])  # Fac 1: the back face
+        surface = sides.outputs["Shader"]
+    links.new(surface, output.inputs["Surface"])
+    return material
+
+
+def make_mesh(scene, spec, materials):
+    # Exactly the exported triangles, in their winding (no validation, which could drop or
+    # reorder them), shaded flat.
+    positions, indices = spec["positions"], spec["triangles"]
+    count = len(indices) // 3
+    mesh = bpy.data.meshes.new(spec["name"])
+    mesh.vertices.add(len(positions) // 3)
+    mesh.vertices.foreach_set("co", positions)
+    mesh.loops.add(len(indices))
+    mesh.loops.foreach_set("vertex_index", indices)
+    mesh.polygons.add(count)
+    mesh.polygons.foreach_set("loop_start", list(range(0, 3 * count, 3)))
+    mesh.polygons.foreach_set("loop_total", [3] * count)
+    mesh.polygons.foreach_set("use_smooth", [False] * count)
+    mesh.update(calc_edges=True)
+    mesh.materials.append(materials[spec["material"]])
+    scene.collection.objects.link(bpy.data.objects.new(spec["name"], mesh))
+
+
+def make_camera(scene, spec):
+    camera = bpy.data.cameras.new("camera")
+    camera.type = "PERSP"
+    # GI Bench's field of view is vertical whatever the aspect ratio.
+    camera.sensor_fit = "VERTICAL"
+    camera.angle_y = math.radians(spec["vertical_fov_deg"])
+    camera.shift_x = camera.shift_y = 0.0
+    camera.clip_start = spec["clip_start"]
+    camera.clip_end = spec["clip_end"]
+    obj = bpy.data.objects.new("camera", camera)
+    # A Blender camera looks down its −Z axis with +Y up the image and +X to the right.
+    p, r, u, f = spec["position"], spec["right"], spec["up"], spec["forward"]
+    obj.matrix_world = Matrix(((r[0], u[0], -f[0], p[0]),
+                               (r[1], u[1], -f[1], p[1]),
+                               (r[2], u[2], -f[2], p[2]),
+                               (0.0, 0.0, 0.0, 1.0)))
+    scene.collection.objects.link(obj)
+    scene.camera = obj
+
+
+def aim_down_minus_z(direction):
+    # Lamps shine along their −Z axis.
+    return Vector(direction).to_track_quat("-Z", "Y").to_matrix().to_4x4()
+
+
+def make_lamps(scene, spec):
+    for index, spot in enumerate(spec["spot_lamps"]):
+        lamp = bpy.data.lights.new(f"spot{index}", "SPOT")
+        lamp.energy = spot["watts"]
+        lamp.color = spot["color"]
+        lamp.spot_size = spot["spot_size"]
+        lamp.spot_blend = spot["spot_blend"]
+        lamp.shadow_soft_size = 0.0  # a point, as GI Bench's spot light
+        obj = bpy.data.objects.new(lamp.name, lamp)
+        obj.matrix_world = Matrix.Translation(spot["position"]) @ aim_down_minus_z(spot["direction"])
+        scene.collection.objects.link(obj)
+    for index, sun in enumerate(spec["sun_lamps"]):
+        lamp = bpy.data.lights.new(f"sun{index}", "SUN")
+        lamp.energy = sun["strength"]  # irradiance in W/m² on a perpendicular plane
+        lamp.color = sun["color"]
+        lamp.angle = 0.0  # a direction, not a disc
+        obj = bpy.data.objects.new(lamp.name, lamp)
+        obj.matrix_world = aim_down_minus_z(sun["direction"])
+        scene.collection.objects.link(obj)
+
+
+def make_world(scene, sky):
+    world = bpy.data.worlds.new("world")
+    world.use_nodes = True
+    background = world.node_tree.nodes["Background"]
+    background.inputs["Color"].default_value = rgba(sky)
+    background.inputs["Strength"].default_value = 1.0
+    scene.world = world
+
+
+def configure_render(scene, render, out):
+    scene.render.engine = "CYCLES"
+    cycles = scene.cycles
+    cycles.device = "CPU"
+    cycles.feature_set = "SUPPORTED"
+    cycles.samples = render["spp"]
+    cycles.use_adaptive_sampling = False  # would stop converged pixels early: noise differs
+    cycles.time_limit = 0.0
+    cycles.use_denoising = False
+    cycles.use_preview_denoising = False
+    for layer in scene.view_layers:
+        layer.cycles.use_denoising = False
+        layer.samples = 0  # the scene's sample count
+    cycles.seed = render["seed"]
+    cycles.use_animated_seed = False
+    # Cycles puts sample 0 at the pixel's centre instead of a random place in it: at N samples
+    # per pixel that biases every pixel by 1/N of (centre − pixel mean), visible in the image
+    # mean at a light's edges. Starting at sample 1 keeps every sample uniform over the pixel.
+    cycles.sample_offset = 1
+    cycles.sampling_pattern = "PROGRESSIVE_MULTI_JITTER"
+    cycles.scrambling_distance = 1.0  # below 1 correlates pixels
+    cycles.auto_scrambling_distance = False
+    # GI Bench's pixel filter: uniform samples over the pixel's square, each weighted equally.
+    cycles.pixel_filter_type = "BOX"
+    cycles.filter_width = 1.0
+    # No clamping (it cuts energy), no glossy blur, caustics kept, every light kept, no guiding,
+    # no fast GI: each changes the expected value or the estimator.
+    cycles.sample_clamp_direct = 0.0
+    cycles.sample_clamp_indirect = 0.0
+    cycles.blur_glossy = 0.0
+    cycles.caustics_reflective = True
+    cycles.caustics_refractive = True
+    cycles.light_sampling_threshold = 0.0
+    cycles.use_guiding = False
+    cycles.use_fast_gi = False
+    cycles.direct_light_sampling_type = "MULTIPLE_IMPORTANCE_SAMPLING"
+    cycles.min_light_bounces = 0
+    cycles.min_transparent_bounces = 0
+    # GI Bench's paths end only by Russian roulette; Cycles' bounce limits are made too high to
+    # matter (it also ends paths by Russian roulette, which keeps them unbiased).
+    bounces = render["max_bounces"]
+    cycles.max_bounces = bounces
+    cycles.diffuse_bounces = bounces
+    cycles.glossy_bounces = bounces
+    cycles.transmission_bounces = bounces
+    cycles.transparent_max_bounces = bounces
+    cycles.volume_bounces = 0
+    cycles.film_exposure = 1.0
+    scene.render.film_transparent = False
+    scene.render.use_motion_blur = False
+    scene.render.use_compositing = False
+    scene.render.use_sequencer = False
+    scene.render.resolution_x = render["width"]
+    scene.render.resolution_y = render["height"]
+    scene.render.resolution_percentage = 100
+    scene.render.pixel_aspect_x = scene.render.pixel_aspect_y = 1.0
+    scene.render.use_border = False
+    # The EXR holds scene-linear radiance; the view transform is left neutral all the same.
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    settings = scene.render.image_settings
+    settings.file_format = "OPEN_EXR"
+    settings.color_mode = "RGBA"
+    settings.color_depth = "32"
+    settings.exr_codec = "ZIP"
+    scene.render.filepath = out
+    scene.render.use_file_extension = False
+
+
+def main():
+    render = dict(SCENE["render"], light_sampling=True)  # noqa: F821 (written above this part)
+    out = parse_arguments(render)
+    scene = empty_file()
+    materials = [make_material(spec, render["light_sampling"])
+                 for spec in SCENE["materials"]]  # noqa: F821
+    for spec in SCENE["meshes"]:  # noqa: F821
+        make_mesh(scene, spec, materials)
+    make_camera(scene, SCENE["camera"])  # noqa: F821
+    make_lamps(scene, SCENE)  # noqa: F821
+    make_world(scene, SCENE["sky"])  # noqa: F821
+    configure_render(scene, render, out)
+    bpy.ops.render.render(write_still=True)
+    if not os.path.isfile(out):
+        print(f"gibench blender script: Cycles wrote no '{out}'", file=sys.stderr)
+        sys.exit(3)
+
+
+main()

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# scripts/cross-check-cycles.sh end to end with the real Blender, on the empty Cornell box at
+# 64x48 and 256 spp (truth: 256 spp): every line of the comparison is printed, and the two
+# renderers' image means agree within their noise. The chamber, which Cycles renders differently,
+# is measured against each renderer's own truth. Then bad input: one line, exit code 2.
+#
+#   tests/scripts/cross_check_cycles_test.sh GIBENCH SOURCE_DIR
+#
+# The tolerance. Over 20 seeds at 64 spp the relative difference of the two image means
+# (Cycles/GI Bench − 1) had a standard deviation of at most 0.36% in any channel; at 256 spp, four
+# times the paths, it is smaller, around Cycles' own offset: its light sampling leaves its image
+# 0.13–0.18% darker than GI Bench's on the Cornell boxes (docs/cycles-cross-check.md). So
+# |difference| ≤ 0.2% + 4·0.36% ≈ 1.6% holds with probability above 99.99% per channel for
+# renderers that agree up to that offset (99.98% for all three, Šidák), and fails a renderer off
+# by a few percent: a wrong light unit, a wrong field of view. (Seeds 0 and 3 gave −0.29% and
+# +0.05% at worst.)
+set -euo pipefail
+gibench=$(realpath "$1")
+source_dir=$(realpath "$2")
+script="$source_dir/scripts/cross-check-cycles.sh"
+work=$(mktemp -d "${TMPDIR:-/tmp}/gibench-cross-check-test-XXXXXX")
+trap 'rm -rf "$work"' EXIT
+tolerance_percent=1.6
+
+fail() {
+  echo "FAIL: $1" >&2
+  exit 1
+}
+
+GIBENCH="$gibench" "$script" cornell --scene-set blocks=false --width 64 --height 48 --spp 256 \
+  --truth-spp 256 --out "$work/run" >"$work/out.txt" 2>"$work/err.txt" ||
+  fail "the cross-check exited with $?: $(cat "$work/err.txt")"
+cat "$work/out.txt"
+for line in "mean R" "mean G" "mean B" "worst 16x16 block mean" "FLIP between them" "time (s)" \
+  "MSE vs truth" "efficiency 1/(MSE·time)"; do
+  grep -q "^$line " "$work/out.txt" || fail "no '$line' line"
+done
+grep -q "Blender's reported render time" "$work/out.txt" || fail "Blender's render time not read"
+for channel in R G B; do
+  difference=$(sed -n "s/^mean $channel .* \([-+][0-9.]*\)%$/\1/p" "$work/out.txt")
+  [ -n "$difference" ] || fail "no relative difference on the 'mean $channel' line"
+  awk -v d="$difference" -v t="$tolerance_percent" 'BEGIN { exit !(d <= t && d >= -t) }' ||
+    fail "mean $channel differs by $difference%, beyond ±$tolerance_percent%"
+done
+
+# A scene Cycles renders differently (the chamber's Phong floor and cos² spot light): the warnings
+# are shown, and each renderer's MSE is taken against a long render of its own.
+GIBENCH="$gibench" "$script" chamber --width 32 --height 24 --spp 4 --truth-spp 16 --replicas 2 \
+  --out "$work/chamber" >"$work/chamber.txt" 2>"$work/chamber.err" ||
+  fail "the chamber's cross-check exited with $?: $(cat "$work/chamber.err")"
+cat "$work/chamber.txt"
+grep -q "is not mapped exactly: Phong material" "$work/chamber.err" || fail "no Phong warning"
+grep -q "(sobol, 2 replicas)" "$work/chamber.txt" || fail "--replicas 2 not passed to gibench"
+grep -q "truth: each renderer's own, 16 spp" "$work/chamber.txt" || fail "not each one's own truth"
+[ -f "$work/chamber/gibench-truth.exr" ] || fail "no GI Bench truth rendered for the chamber"
+
+# Bad input: one line naming the problem, exit code 2, no directory left behind.
+expect_refusal() {
+  local expected="$1"
+  shift
+  local code=0
+  "$@" >"$work/bad.out" 2>"$work/bad.err" || code=$?
+  [ "$code" -eq 2 ] || fail "$* exited with $code, not 2"
+  [ "$(wc -l <"$work/bad.err")" -eq 1 ] || fail "$* printed more than one line: $(cat "$work/bad.err")"
+  grep -q -- "$expected" "$work/bad.err" || fail "$* did not say '$expected': $(cat "$work/bad.err")"
+}
+# (ls fails when there are none: under pipefail that must not end the test.)
+leftovers() { (ls -d /tmp/cross-check-cycles.* 2>/dev/null || true) | wc -l; }
+before=$(leftovers)
+expect_refusal "unknown scene 'cornel'" env GIBENCH="$gibench" "$script" cornel --spp 4
+expect_refusal "no Blender" env GIBENCH="$gibench" BLENDER=/nonexistent/blender "$script" cornell
+expect_refusal "no gibench" env GIBENCH=/nonexistent/gibench "$script" cornell
+expect_refusal "--spp 'x'" env GIBENCH="$gibench" "$script" cornell --spp x
+expect_refusal "--replicas 3 does not divide --spp 4" env GIBENCH="$gibench" "$script" cornell \
+  --spp 4 --replicas 3 --width 8 --height 8
+[ "$(leftovers)" -eq "$before" ] ||
+  fail "a refused cross-check left its directory behind"
+echo "PASS"
