@@ -19,5 +19,6 @@ CommandRunner addHistoryCommand(CLI::App& app);
 CommandRunner addStoreCommand(CLI::App& app);
 CommandRunner addReportCommand(CLI::App& app);
 CommandRunner addExportBlenderCommand(CLI::App& app);
+CommandRunner addMergeCommand(CLI::App& app);
 
 }  // namespace gib::cli

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addStoreCommand, "store");
   add(&gib::cli::addReportCommand, "report");
   add(&gib::cli::addExportBlenderCommand, "export-blender");
+  add(&gib::cli::addMergeCommand, "merge");
 
   try {
     app.parse(argc, argv);

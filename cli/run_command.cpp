@@ -1,13 +1,14 @@
 // gibench run SUITE.toml [--out DIR] [--store DIR] [--db FILE | --no-history] [--jobs N]
 //                        [--only PATTERN ...] [--list] [--gl-device D] [--trend-runs N]
+//                        [--shard I/N | --slurm [--partition-cpu P] [--partition-gpu P]
+//                         [--sbatch-arg ARG ...] [--gpu-sbatch-arg ARG ...] [--resume] [--wait]]
 #include "cli/commands.h"
+#include "cli/run_summary.h"
 #include "common/cache_paths.h"
 #include "common/input_error.h"
 #include "common/progress.h"
-#include "reports/html_report.h"
-#include "reports/report_context.h"
-#include "results/history_db.h"
 #include "suites/run_environment.h"
+#include "suites/slurm_submission.h"
 #include "suites/suite_file.h"
 #include "suites/suite_runner.h"
 
@@ -32,6 +33,13 @@ struct RunCommandOptions {
   bool list = false;
   std::string gl_device;
   int trend_runs = 20;
+  std::string shard;
+  bool slurm = false;
+  suites::SlurmOptions slurm_options;
+  bool wait = false;
+  // A Slurm task (written into its batch script by --slurm, not typed by people).
+  std::string task_list;
+  int task_index = -1;
 };
 
 // "runs/smoke-20261122-100405": a new directory per run unless --out names one (to resume).
@@ -42,36 +50,60 @@ fs::path defaultOutDir(const std::string& suite) {
   return fs::path("runs") / fmt::format("{}-{}-{}", suite, stamp.substr(0, 8), stamp.substr(8));
 }
 
-// The run's report, compared with the suite's earlier runs in the history database it was
-// recorded in (none without one).
-fs::path writeReport(const suites::RunOutcome& outcome, const suites::RunOptions& options,
-                     int trend_runs) {
-  reports::ReportContext context;
-  if (!options.history_db.empty())
-    context = reports::loadReportContext(results::HistoryDatabase::open(options.history_db),
-                                         outcome.results, std::size_t(trend_runs));
-  return reports::writeHtmlReport(outcome.run_dir, outcome.results, context);
+void checkModes(const RunCommandOptions& o) {
+  if (o.trend_runs < 2)
+    throw InputError(fmt::format("--trend-runs {} draws no trend; give 2 or more", o.trend_runs));
+  if (o.no_history && !o.db.empty())
+    throw InputError("--db and --no-history contradict each other; give one of them");
+  if (o.slurm && !o.shard.empty())
+    throw InputError("--slurm and --shard contradict each other: Slurm makes its own tasks");
+  const bool slurm_only =
+      o.wait || o.slurm_options.resume || !o.slurm_options.partition_cpu.empty() ||
+      !o.slurm_options.partition_gpu.empty() || !o.slurm_options.sbatch_args.empty() ||
+      !o.slurm_options.gpu_sbatch_args.empty();
+  if (slurm_only && !o.slurm)
+    throw InputError("--wait, --resume, --partition-* and --*sbatch-arg go with --slurm; add it");
+  if (o.slurm && o.out.empty() && o.slurm_options.resume)
+    throw InputError("--resume needs the run to resume: give its directory with --out");
+  if (!o.task_list.empty() && (o.slurm || !o.shard.empty() || o.task_index < 0))
+    throw InputError("--task-list is for a Slurm task: give it with --task-index and nothing else");
 }
 
-void printSummary(const suites::RunOutcome& outcome, const fs::path& report) {
-  const results::RunResults& run = outcome.results;
-  const std::string metric = run.primary_metric.empty() ? "metric" : run.primary_metric;
-  fmt::print("{:<44} {:>12} {:>12} {:>10} {:>8}\n", "job", metric, "full " + metric, "frame ms",
-             "seconds");
-  for (const results::JobResult& job : run.jobs) {
-    auto value = [&](const results::NamedValues& values) {
-      for (const auto& [name, v] : values)
-        if (name == run.primary_metric) return fmt::format("{:.4g}", v);
-      return std::string("-");
-    };
-    const std::optional<double> frame = job.frameMedianMs();
-    fmt::print("{:<44} {:>12} {:>12} {:>10} {:>8.1f}\n", job.id, value(job.metrics),
-               value(job.metrics_full), frame ? fmt::format("{:.2f}", *frame) : "-", job.seconds);
+// A Slurm task: one line of a task list, run as a part of the run in --out.
+int runSlurmTask(const suites::Suite& suite, suites::RunOptions options,
+                 const RunCommandOptions& o) {
+  const suites::SlurmTask task = suites::readSlurmTask(o.task_list, o.task_index);
+  options.job = task.job;
+  options.part = true;
+  options.history_db.clear();
+  if (task.references_only) {
+    suites::obtainReferencesOfJob(suite, options);
+    return 0;
   }
-  fmt::print("jobs       {} run, {} finished earlier\n", outcome.ran, outcome.skipped);
-  fmt::print("results    {}\n", outcome.results_file.string());
-  if (outcome.history_row > 0) fmt::print("history    run {}\n", outcome.history_row);
-  fmt::print("report     {}\n", report.string());
+  return suites::runSuite(suite, options).failed == 0 ? 0 : 1;
+}
+
+int submitSlurm(const suites::Suite& suite, const suites::RunOptions& options,
+                const RunCommandOptions& o) {
+  const suites::SlurmSubmission submission = suites::submitToSlurm(suite, options, o.slurm_options);
+  fmt::print("run        {} of suite '{}' in {}\n", submission.run_id, suite.name,
+             options.out_dir.string());
+  if (submission.finished_earlier > 0)
+    fmt::print("jobs       {} finished earlier, not submitted\n", submission.finished_earlier);
+  if (!submission.cpu_array.empty())
+    fmt::print("slurm      {} reference array ({} tasks)\n", submission.cpu_array,
+               submission.cpu_tasks);
+  if (!submission.gpu_array.empty())
+    fmt::print("slurm      {} technique array ({} tasks)\n", submission.gpu_array,
+               submission.gpu_tasks);
+  fmt::print("slurm      {} merge job\n", submission.merge_job);
+  fmt::print("logs       {}\n", (submission.dir / "logs").string());
+  std::fflush(stdout);
+  if (!o.wait) return 0;
+  const int status = suites::waitForMerge(submission, stderr);
+  fmt::print("merged     exit status {}; report {}\n", status,
+             (options.out_dir / "index.html").string());
+  return status;
 }
 
 int runRun(const RunCommandOptions& o) {
@@ -80,10 +112,7 @@ int runRun(const RunCommandOptions& o) {
     for (const suites::Job& job : suites::selectJobs(suite, o.only)) fmt::print("{}\n", job.id);
     return 0;
   }
-  if (o.trend_runs < 2)
-    throw InputError(fmt::format("--trend-runs {} draws no trend; give 2 or more", o.trend_runs));
-  if (o.no_history && !o.db.empty())
-    throw InputError("--db and --no-history contradict each other; give one of them");
+  checkModes(o);
   suites::RunOptions options;
   options.suite_file = o.suite;
   options.out_dir = o.out.empty() ? defaultOutDir(suite.name) : fs::path(o.out);
@@ -94,8 +123,21 @@ int runRun(const RunCommandOptions& o) {
   options.only = o.only;
   options.gl_device = o.gl_device;
   options.progress = ProgressBar::stderrIsTerminal();
+  if (!o.task_list.empty()) return runSlurmTask(suite, options, o);
+  if (o.slurm) return submitSlurm(suite, options, o);
+  if (!o.shard.empty()) {
+    options.shard = suites::parseShard(o.shard);
+    options.part = true;
+    const suites::RunOutcome outcome = suites::runSuite(suite, options);
+    fmt::print("shard      {}/{}: {} jobs run, {} finished earlier, {} failed\n",
+               options.shard.index, options.shard.count, outcome.ran - outcome.failed,
+               outcome.skipped, outcome.failed);
+    fmt::print("merge      gibench merge {} (once every shard has run)\n",
+               outcome.run_dir.string());
+    return outcome.failed == 0 ? 0 : 1;
+  }
   const suites::RunOutcome outcome = suites::runSuite(suite, options);
-  printSummary(outcome, writeReport(outcome, options, o.trend_runs));
+  printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs));
   return 0;
 }
 
@@ -119,6 +161,27 @@ CommandRunner addRunCommand(CLI::App& app) {
   run->add_flag("--list", o->list, "print the job ids (after --only) and exit");
   run->add_option("--gl-device", o->gl_device, "auto | surfaceless | N (EGL device index)");
   run->add_option("--trend-runs", o->trend_runs, "runs shown in the report's trend charts");
+  run->add_option("--shard", o->shard,
+                  "run only the i-th of n slices of the jobs (I/N); `gibench merge` assembles "
+                  "the shards");
+  run->add_flag("--slurm", o->slurm,
+                "submit the suite to Slurm as job arrays (references, techniques) and a merge "
+                "job; prints the job ids and returns");
+  run->add_option("--partition-cpu", o->slurm_options.partition_cpu,
+                  "Slurm partition of the reference tasks and the merge (default: Slurm's)");
+  run->add_option("--partition-gpu", o->slurm_options.partition_gpu,
+                  "Slurm partition of the technique tasks (default: Slurm's)");
+  run->add_option("--sbatch-arg", o->slurm_options.sbatch_args,
+                  "an sbatch option for every job (e.g. --sbatch-arg=--exclusive)")
+      ->allow_extra_args(false);
+  run->add_option("--gpu-sbatch-arg", o->slurm_options.gpu_sbatch_args,
+                  "an sbatch option for the technique tasks (e.g. --gpu-sbatch-arg=--gres=gpu:1)")
+      ->allow_extra_args(false);
+  run->add_flag("--resume", o->slurm_options.resume,
+                "with --slurm and --out: submit only the jobs without a result");
+  run->add_flag("--wait", o->wait, "with --slurm: wait for the merge job and exit with its status");
+  run->add_option("--task-list", o->task_list)->group("");  // a Slurm task's own options
+  run->add_option("--task-index", o->task_index)->group("");
   return [o] { return runRun(*o); };
 }
 

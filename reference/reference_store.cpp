@@ -8,6 +8,7 @@
 #include "image/output_files.h"
 #include "reference/reference_output.h"
 #include "reference/reference_store_entry.h"
+#include "reference/reference_store_lock.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -16,6 +17,7 @@
 #include <atomic>
 #include <chrono>
 #include <ctime>
+#include <thread>
 
 namespace gib::ref {
 
@@ -185,7 +187,7 @@ std::mutex& ReferenceStore::renderLock(const std::string& key) {
 }
 
 StoredReference ReferenceStore::obtain(const scene::Scene& scene, const ReferenceSpec& spec,
-                                       bool progress) {
+                                       bool progress, const WaitingNote& waiting) {
   const RenderSettings settings = renderSettingsOf(spec, progress);
   validateRenderSettings(settings);
   const std::string key = referenceKey(scene, spec);
@@ -195,6 +197,23 @@ StoredReference ReferenceStore::obtain(const scene::Scene& scene, const Referenc
 
   // Find an unwritable store before the render, not after it.
   { StagingDir probe(root_, key); }
+  // Another process (of this host or another sharing the store) may be rendering the key: wait
+  // for its entry rather than render it a second time.
+  const fs::path lock_dir = root_ / "locks" / key;
+  std::unique_ptr<StoreKeyLock> key_lock;
+  bool told = false;
+  for (auto pause = std::chrono::milliseconds(100);
+       !(key_lock = StoreKeyLock::tryAcquire(lock_dir));
+       pause = std::min(pause * 2, std::chrono::milliseconds(2000))) {
+    if (std::optional<StoredReference> found = loadIntact(final_dir)) return *found;
+    if (waiting && !told) {
+      waiting(StoreKeyLock::holderOf(lock_dir));
+      told = true;
+    }
+    std::this_thread::sleep_for(pause);
+  }
+  // The holder we waited for may have published just before letting go.
+  if (std::optional<StoredReference> found = loadIntact(final_dir)) return *found;
   RenderResult result = renderReference(scene, settings);
 
   // Write the entry's files into a staging directory, then publish it whole.
@@ -215,6 +234,11 @@ StoredReference ReferenceStore::obtain(const scene::Scene& scene, const Referenc
   stored.variance = std::move(result.variance);
   stored.variance_dof = result.variance_dof;
   return stored;
+}
+
+bool ReferenceStore::contains(const std::string& key) const {
+  std::error_code ec;
+  return isHexKey(key) && fs::is_regular_file(referencesDir(root_) / key / "entry.json", ec);
 }
 
 std::optional<StoredReference> ReferenceStore::find(const std::string& key) const {

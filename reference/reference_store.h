@@ -9,6 +9,7 @@
 //   <root>/references/<key>/reference.exr   mean (RGB) + variance, direct, indirect layers
 //   <root>/references/<key>/reference.png   for looking at
 //   <root>/references/<key>/entry.json      what was rendered, how, by which version, when
+//   <root>/locks/<key>/                     held while a process renders the key
 //   <root>/history.sqlite                   the run history (reports/history_db.h), beside it
 // An entry is written into a temporary directory and renamed into place: a reader never sees a
 // half-written entry, and two processes rendering the same key both end with one whole entry.
@@ -20,6 +21,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -84,12 +86,19 @@ class ReferenceStore {
 
   const std::filesystem::path& root() const { return root_; }
 
+  // Called once with the holder ("host:pid") when another process is rendering the key.
+  using WaitingNote = std::function<void(const std::string& holder)>;
+
   // The entry of `spec`, rendered and stored first when absent. Safe to call from several
-  // threads (one render per key at a time) and processes. `progress`: draw a progress bar on a
+  // threads and processes, on one host or many sharing the root: one render per key at a time
+  // (reference/reference_store_lock.h); a caller that finds the key being rendered elsewhere
+  // waits for that entry, which it then returns as a hit. `progress`: draw a progress bar on a
   // terminal while rendering. Throws gib::InputError when the root cannot be written.
   StoredReference obtain(const scene::Scene& scene, const ReferenceSpec& spec,
-                         bool progress = false);
+                         bool progress = false, const WaitingNote& waiting = {});
   std::optional<StoredReference> find(const std::string& key) const;
+  // Whether the store holds an entry of `key` (without reading its images).
+  bool contains(const std::string& key) const;
 
   // Every entry, newest first. An unreadable entry.json throws gib::InputError naming it.
   std::vector<StoreEntry> list() const;

@@ -125,6 +125,7 @@ std::string matrixEntry(const results::RunResults& results, const results::JobRe
       fmt::format("<div class=\"job {}\"><a href=\"{}\">{}</a>",
                   verdictClass(compared ? std::optional(compared->overall) : std::nullopt),
                   escapeHtml(urlPath(jobPageFile(job))), escapeHtml(label));
+  if (job.failed()) html += "<div class=\"failure\">failed</div>";
   if (const std::optional<double> value = job.metric(results.primary_metric)) {
     const results::MetricChange* change =
         compared ? compared->findMetric(results.primary_metric) : nullptr;

@@ -51,7 +51,23 @@ std::string jobFacts(const results::JobResult& job) {
       {"reference", referenceText(job.reference)},
       {"full reference", job.full_reference ? referenceText(*job.full_reference) : ""},
       {"job time", fmt::format("{} s", formatNumber(job.seconds, 3))},
+      {"host", job.execution.host},
+      {"Slurm task", job.execution.scheduler_job},
+      {"queue wait", job.execution.queue_seconds >= 0
+                         ? fmt::format("{} s", formatNumber(job.execution.queue_seconds, 3))
+                         : ""},
+      {"GL renderer", job.execution.gl_renderer},
   });
+}
+
+// Why a job has no result, and its log when the scheduler kept one.
+std::string failureSection(const results::JobResult& job) {
+  if (!job.failed()) return {};
+  std::string html = fmt::format("<p class=\"failure\">{}</p>\n", escapeHtml(job.failure));
+  if (!job.outputs.log.empty())
+    html += fmt::format("<p>Log: <a href=\"../{}\">{}</a></p>\n",
+                        escapeHtml(urlPath(job.outputs.log)), escapeHtml(job.outputs.log));
+  return htmlSection("failure", "The job failed", html);
 }
 
 std::string metricsSection(const results::JobResult& job,
@@ -113,6 +129,7 @@ std::string jobPage(const std::filesystem::path& run_dir, const results::RunResu
       "{} · run {}</p>\n",
       escapeHtml(results.run.suite), escapeHtml(job.id), escapeHtml(job.scene),
       escapeHtml(job.technique), escapeHtml(results.run.id));
+  body += failureSection(job);
   body += jobFacts(job);
   body += metricsSection(job, compared);
   body += htmlSection("images", "Images", imageViewer(run_dir, job));

@@ -88,6 +88,16 @@ struct RunConditions {
   bool operator==(const RunConditions&) const = default;
 };
 
+// Where and how one job ran: a run spread over machines (`gibench run --slurm`, `--shard`) shows
+// per job which node, scheduler task and GL device it had.
+struct JobExecution {
+  std::string host;
+  std::string scheduler_job;  // Slurm: "<array job id>_<task id>"; empty when run directly
+  double queue_seconds = -1;  // from submission to start; −1 when the job was not queued
+  std::string gl_renderer;    // technique jobs: the GL_RENDERER string
+  bool operator==(const JobExecution&) const = default;
+};
+
 struct RunInfo {
   std::string id;  // unique: "<UTC yyyymmdd-hhmmss>-<suite>-<8 hex>"
   std::string suite;
@@ -148,6 +158,7 @@ struct JobOutputs {
   std::string difference_png;  // |test − reference|, amplified
   std::string flip_png;        // the FLIP map (magma), when flip was measured
   std::string timings_json;    // full per-pass timings with every frame's samples
+  std::string log;             // a failed job's log (its scheduler task's output), when kept
   bool operator==(const JobOutputs&) const = default;
 };
 
@@ -196,7 +207,14 @@ struct JobResult {
   std::vector<AuxiliaryImageOutput> auxiliary_images;
   double seconds = 0;    // wall time of the whole job
   std::string job_hash;  // hash of everything that defines the job (resume skips a match)
+  JobExecution execution;
+  // Why the job has no result ("the GL context could not be created: …", "no result: the task
+  // was cancelled, pre-empted or crashed"); empty when it ran to the end. Only runs assembled by
+  // `gibench merge` hold failed jobs: a local run stops at its first failure.
+  std::string failure;
   bool operator==(const JobResult&) const = default;
+
+  bool failed() const { return !failure.empty(); }
 
   // The median frame time on the reported clock, when the job was timed.
   std::optional<double> frameMedianMs() const;

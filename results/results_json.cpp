@@ -118,6 +118,13 @@ const std::array<JsonMember<Convergence::Point>, 2> kPointMembers = {{
     jsonMember<&Convergence::Point::seconds>("seconds"),
 }};
 
+const std::array<JsonMember<JobExecution>, 4> kExecutionMembers = {{
+    jsonMember<&JobExecution::host>("host"),
+    jsonMember<&JobExecution::scheduler_job>("scheduler_job"),
+    jsonMember<&JobExecution::queue_seconds>("queue_seconds"),
+    jsonMember<&JobExecution::gl_renderer>("gl_renderer"),
+}};
+
 const std::array<JsonMember<JobOutputs>, 6> kOutputsMembers = {{
     jsonMember<&JobOutputs::image>("image"),
     jsonMember<&JobOutputs::image_png>("image_png"),
@@ -308,6 +315,10 @@ JobResult readJob(const JsonField& f) {
     images->forEachElement([&](const JsonField& image) {
       j.auxiliary_images.push_back(membersFromJson(image, kAuxiliaryImageMembers));
     });
+  if (auto execution = f.find("execution"))
+    j.execution = membersFromJson(*execution, kExecutionMembers);
+  if (auto failure = f.find("failure")) j.failure = failure->asString();
+  if (auto log = f.at("outputs").find("log")) j.outputs.log = log->asString();
   return j;
 }
 
@@ -406,6 +417,9 @@ json jobToJson(const JobResult& j) {
   for (const AuxiliaryImageOutput& image : j.auxiliary_images)
     images.push_back(membersToJson(image, kAuxiliaryImageMembers));
   out["auxiliary_images"] = std::move(images);
+  out["execution"] = membersToJson(j.execution, kExecutionMembers);
+  out["failure"] = j.failure;
+  out["outputs"]["log"] = j.outputs.log;
   return out;
 }
 

@@ -23,6 +23,9 @@ packages=(
   chromium
   # The cross-check against Cycles (scripts/cross-check-cycles.sh) and its test
   blender
+  # Suites on Slurm (gibench run --slurm): the client, and a one-node cluster for the tests
+  # (scripts/slurm-local.sh)
+  slurm-client slurmctld slurmd munge
 )
 
 missing=()

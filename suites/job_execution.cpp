@@ -81,7 +81,12 @@ ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment&
       fmt::format("reference {} ({}x{}, {} spp)", scene::describePathClass(path_class), spec.width,
                   spec.height, spec.spp);
   const Clock::time_point start = Clock::now();
-  ref::StoredReference stored = env.store->obtain(p.scene, spec, env.progress);
+  ref::StoredReference stored =
+      env.store->obtain(p.scene, spec, env.progress, [&](const std::string& holder) {
+        if (env.note)
+          env.note(fmt::format("{}: being rendered by {}, waiting", what,
+                               holder.empty() ? "another process" : holder));
+      });
   const double seconds = secondsSince(start);
   if (env.note)
     env.note(stored.hit ? fmt::format("{}: in the store", what)
@@ -345,9 +350,7 @@ PreparedJob prepareJob(const Job& job) {
   return p;
 }
 
-results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
-                              const fs::path& job_dir, rt::gl::GlIdentity* gl) {
-  const Clock::time_point start = Clock::now();
+results::JobResult describeJob(const PreparedJob& p) {
   const Job& job = *p.job;
   results::JobResult result;
   result.id = job.id;
@@ -364,12 +367,47 @@ results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
   result.path_class =
       scene::describePathClass(job.isReference() ? referenceClass(p) : p.path_class);
   result.job_hash = p.hash;
+  return result;
+}
+
+results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
+                              const fs::path& job_dir, rt::gl::GlIdentity* gl) {
+  const Clock::time_point start = Clock::now();
+  const Job& job = *p.job;
+  results::JobResult result = describeJob(p);
   if (job.isReference())
     runReferenceJob(p, env, job_dir, result);
   else
     runTechniqueJob(p, env, job_dir, result, gl);
   result.seconds = secondsSince(start);
   return result;
+}
+
+namespace {
+
+// The classes of the job's references: its class's, then (technique jobs) the full one when that
+// differs.
+std::vector<scene::PathClass> referenceClasses(const PreparedJob& p) {
+  std::vector<scene::PathClass> classes = {referenceClass(p)};
+  if (!p.job->isReference() && classes.front() != scene::PathClass{})
+    classes.push_back(scene::PathClass{});
+  return classes;
+}
+
+}  // namespace
+
+std::vector<ref::ReferenceSpec> jobReferences(const PreparedJob& p) {
+  std::vector<ref::ReferenceSpec> specs;
+  for (const scene::PathClass& path_class : referenceClasses(p))
+    specs.push_back(referenceSpec(p, path_class));
+  return specs;
+}
+
+void obtainJobReferences(const PreparedJob& p, const JobEnvironment& env) {
+  for (const scene::PathClass& path_class : referenceClasses(p)) {
+    results::ReferenceUse use;
+    obtainReference(p, env, path_class, &use);
+  }
 }
 
 metrics::PassTimings repeatTechniqueJob(const PreparedJob& p, const JobEnvironment& env) {

@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gib::suites {
 
@@ -44,11 +45,23 @@ struct JobEnvironment {
   std::function<void(const std::string&)> note;
 };
 
+// What defines the job (id, scene, technique, parameters, size, class, hash), before any of it
+// runs: the start of its result, and all of a failed job's.
+results::JobResult describeJob(const PreparedJob& job);
+
 // Runs the job and writes its files into `job_dir`. The GL identity of a technique job is
 // returned through `gl` when given.
 results::JobResult executeJob(const PreparedJob& job, const JobEnvironment& environment,
                               const std::filesystem::path& job_dir,
                               rt::gl::GlIdentity* gl = nullptr);
+
+// The store specs of the references the job is measured against: its class's, then the full
+// one when that differs (a reference job: its class's alone).
+std::vector<ref::ReferenceSpec> jobReferences(const PreparedJob& job);
+
+// Fetches the job's references, rendering what the store lacks, and nothing else: what a Slurm
+// CPU task does for a technique job before its GPU task runs (suites/slurm_submission.h).
+void obtainJobReferences(const PreparedJob& job, const JobEnvironment& environment);
 
 // One more run of a technique job (`repeats` > 1): a fresh GL context and the job's frames, its
 // timings alone (the images and metrics of the first run stand: renders are deterministic).

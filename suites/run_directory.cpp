@@ -7,6 +7,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 
 namespace gib::suites {
@@ -29,48 +33,95 @@ void createDirectory(const fs::path& dir) {
                                  dir.string(), ec ? ec.message() : "not a directory"));
 }
 
+// Empty but for another process's state file being staged (publishStateOnce): a new run's
+// directory, which that process is about to claim.
 bool isEmptyDirectory(const fs::path& dir) {
   std::error_code ec;
-  return fs::is_empty(dir, ec) && !ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.front() != '.' || name.find(kStateFile) == std::string::npos) return false;
+  }
+  return !ec;
 }
 
 }  // namespace
 
-RunDirectory RunDirectory::open(const fs::path& dir, const std::string& suite,
-                                const results::RunInfo& fresh) {
+namespace {
+
+RunState parseState(const fs::path& dir) {
+  const fs::path state = dir / kStateFile;
+  std::ifstream in(state);
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  auto isString = [&](const char* key) { return json.contains(key) && json[key].is_string(); };
+  if (!json.is_object() || !isString("run_id") || !isString("suite") || !isString("started"))
+    throw InputError(
+        fmt::format("'{}' is damaged; remove the run directory '{}' or choose "
+                    "another --out",
+                    state.string(), dir.string()));
+  RunState parsed;
+  parsed.run_id = json["run_id"];
+  parsed.suite = json["suite"];
+  parsed.started = json["started"];
+  // Added with sharding and Slurm: runs started before them lack these.
+  if (isString("suite_file")) parsed.suite_file = json["suite_file"].get<std::string>();
+  if (json.contains("only") && json["only"].is_array())
+    for (const nlohmann::json& pattern : json["only"])
+      if (pattern.is_string()) parsed.only.push_back(pattern);
+  return parsed;
+}
+
+// Publishes the state file only if none exists: written beside it, then hard-linked into place
+// (link fails when the name exists, atomically, on local filesystems and NFS alike). False when
+// another process published first.
+bool publishStateOnce(const fs::path& dir, const RunState& state) {
+  const nlohmann::ordered_json json = {{"run_id", state.run_id},
+                                       {"suite", state.suite},
+                                       {"suite_file", state.suite_file.string()},
+                                       {"only", state.only},
+                                       {"started", state.started}};
+  const fs::path staged = dir / fmt::format(".{}.{}", kStateFile, getpid());
+  image::writeTextFile(staged, json.dump(2) + "\n");
+  const int linked = link(staged.c_str(), (dir / kStateFile).c_str());
+  const int error = errno;
+  std::error_code ignored;
+  fs::remove(staged, ignored);
+  if (linked == 0) return true;
+  if (error == EEXIST) return false;
+  throw InputError(fmt::format("cannot write '{}' ({}); choose another --out",
+                               (dir / kStateFile).string(), std::strerror(error)));
+}
+
+}  // namespace
+
+RunState RunDirectory::readState(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_regular_file(dir / kStateFile, ec))
+    throw InputError(fmt::format("'{}' holds no gibench run (no {}); give a run directory",
+                                 dir.string(), kStateFile));
+  return parseState(dir);
+}
+
+RunDirectory RunDirectory::open(const fs::path& dir, const RunState& fresh) {
   RunDirectory run;
   run.dir_ = dir;
-  const fs::path state = dir / kStateFile;
   std::error_code ec;
-  if (fs::is_regular_file(state, ec)) {
-    std::ifstream in(state);
-    const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-    if (!json.is_object() || !json.contains("run_id") || !json.contains("suite") ||
-        !json.contains("started") || !json["run_id"].is_string() || !json["suite"].is_string() ||
-        !json["started"].is_string())
+  if (!fs::is_regular_file(dir / kStateFile, ec)) {
+    if (fs::exists(dir, ec) && fs::is_directory(dir, ec) && !isEmptyDirectory(dir))
       throw InputError(
-          fmt::format("'{}' is damaged; remove the run directory '{}' or choose "
-                      "another --out",
-                      state.string(), dir.string()));
-    if (json["suite"] != suite)
-      throw InputError(fmt::format("'{}' holds a run of suite '{}', not '{}'; choose another --out",
-                                   dir.string(), json["suite"].get<std::string>(), suite));
-    run.run_id_ = json["run_id"];
-    run.started_ = json["started"];
-    run.resumed_ = true;
-    return run;
+          fmt::format("'{}' is not empty and holds no gibench run; choose another --out "
+                      "(or an empty or new directory)",
+                      dir.string()));
+    createDirectory(dir);
+    if (publishStateOnce(dir, fresh)) {
+      run.state_ = fresh;
+      return run;
+    }
   }
-  if (fs::exists(dir, ec) && fs::is_directory(dir, ec) && !isEmptyDirectory(dir))
-    throw InputError(
-        fmt::format("'{}' is not empty and holds no gibench run; choose another --out "
-                    "(or an empty or new directory)",
-                    dir.string()));
-  createDirectory(dir);
-  run.run_id_ = fresh.id;
-  run.started_ = fresh.started;
-  const nlohmann::ordered_json json = {
-      {"run_id", run.run_id_}, {"suite", suite}, {"started", run.started_}};
-  image::writeTextFile(state, json.dump(2) + "\n");
+  run.state_ = parseState(dir);
+  if (run.state_.suite != fresh.suite)
+    throw InputError(fmt::format("'{}' holds a run of suite '{}', not '{}'; choose another --out",
+                                 dir.string(), run.state_.suite, fresh.suite));
+  run.resumed_ = true;
   return run;
 }
 
@@ -105,6 +156,26 @@ fs::path RunDirectory::prepareJob(const Job& job) const {
 
 void RunDirectory::recordJob(const Job& job, const results::JobResult& result) const {
   results::writeJobFile(jobDirectory(job) / "result.json", result);
+}
+
+void RunDirectory::recordFailure(const Job& job, const std::string& job_hash,
+                                 const std::string& error) const {
+  std::error_code ec;
+  fs::create_directories(jobDirectory(job), ec);
+  const nlohmann::ordered_json json = {{"id", job.id}, {"job_hash", job_hash}, {"error", error}};
+  image::writeTextFile(jobDirectory(job) / "failed.json", json.dump(2) + "\n");
+}
+
+std::optional<std::string> RunDirectory::failure(const Job& job,
+                                                 const std::string& job_hash) const {
+  std::ifstream in(jobDirectory(job) / "failed.json");
+  if (!in) return std::nullopt;
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!json.is_object() || json.value("id", "") != job.id ||
+      json.value("job_hash", "") != job_hash || !json.contains("error") ||
+      !json["error"].is_string())
+    return std::nullopt;
+  return json["error"].get<std::string>();
 }
 
 }  // namespace gib::suites

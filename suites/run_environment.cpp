@@ -1,25 +1,21 @@
 #include "suites/run_environment.h"
 
+#include "common/host_name.h"
 #include "gib/version.h"
 #include "reference/embree_scene.h"
 
 #include <fmt/chrono.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <thread>
 
 namespace gib::suites {
 
 namespace {
-
-std::string hostName() {
-  char name[256] = {};
-  if (gethostname(name, sizeof name - 1) != 0) return "unknown";
-  return name;
-}
 
 // The "model name" line of /proc/cpuinfo (Linux); "unknown" elsewhere.
 std::string cpuModel() {
@@ -52,6 +48,45 @@ results::RunInfo describeEnvironment() {
   info.cpu_cores = static_cast<int>(std::thread::hardware_concurrency());
   info.embree_version = ref::embreeVersion();
   return info;
+}
+
+}  // namespace gib::suites
+
+namespace gib::suites {
+
+namespace {
+
+std::string environmentVariable(const char* name) {
+  const char* value = std::getenv(name);
+  return value ? value : "";
+}
+
+}  // namespace
+
+results::JobExecution describeJobExecution() {
+  results::JobExecution execution;
+  execution.host = hostName();
+  // Slurm names an array task by its array's job id and its index; a plain job by its own id.
+  const std::string array = environmentVariable("SLURM_ARRAY_JOB_ID");
+  const std::string task = environmentVariable("SLURM_ARRAY_TASK_ID");
+  const std::string job = environmentVariable("SLURM_JOB_ID");
+  if (!array.empty() && !task.empty())
+    execution.scheduler_job = array + "_" + task;
+  else
+    execution.scheduler_job = job;
+  // The submitting gibench exports its submission time (seconds since the epoch) to its tasks.
+  const std::string submitted = environmentVariable(kSubmittedAtVariable);
+  if (!submitted.empty()) {
+    char* end = nullptr;
+    const double at = std::strtod(submitted.c_str(), &end);
+    if (end != submitted.c_str() && *end == '\0') {
+      const double now =
+          std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+              .count();
+      execution.queue_seconds = std::max(0.0, now - at);
+    }
+  }
+  return execution;
 }
 
 }  // namespace gib::suites

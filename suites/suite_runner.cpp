@@ -13,11 +13,13 @@
 #include "suites/run_conditions.h"
 #include "suites/run_directory.h"
 #include "suites/run_environment.h"
+#include "suites/suite_file.h"
 
 #include <fmt/format.h>
 #include <fnmatch.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <exception>
 #include <fstream>
@@ -74,6 +76,8 @@ void checkResources(const RunOptions& options, const std::vector<PreparedJob>& j
                     "--store DIR",
                     options.store_root.string(), ec ? " (" + ec.message() + ")" : ""));
   if (!options.history_db.empty()) results::HistoryDatabase::open(options.history_db);
+  // A part records a job that cannot get its GL as failed, and goes on with the others.
+  if (options.part) return;
   for (const PreparedJob& job : jobs)
     if (job.technique) {
       rt::gl::ContextOptions gl;
@@ -161,6 +165,10 @@ class JobScheduler {
         try {
           runTask(tasks[k]);
         } catch (...) {
+          if (options_.part) {
+            recordFailure(tasks[k].job, std::current_exception());
+            continue;
+          }
           std::lock_guard lock(failure_mutex);
           if (!failure) failure = std::current_exception();
           return;
@@ -176,6 +184,7 @@ class JobScheduler {
   }
 
   std::optional<rt::gl::GlIdentity> gl() const { return gl_; }
+  std::size_t failed() const { return failed_; }
 
  private:
   struct Task {
@@ -187,6 +196,7 @@ class JobScheduler {
     std::optional<results::JobResult> result;                  // from the first run
     std::vector<std::optional<metrics::PassTimings>> timings;  // of each repeat
     int remaining = 0;
+    bool failed = false;  // a part's job that threw: its other tasks are skipped
     ConditionsSample before;
     fs::path dir;
   };
@@ -218,6 +228,10 @@ class JobScheduler {
     std::string prefix = fmt::format("[{}/{}] {}", task.job + 1, jobs_.size(), job.job->id);
     if (repeats > 1) prefix += fmt::format(" (run {}/{})", task.repeat + 1, repeats);
     JobState& state = states_[task.job];
+    {
+      std::lock_guard lock(state_mutex_);
+      if (state.failed) return;
+    }
     const JobEnvironment env = environment(prefix);
     if (task.repeat == 0) {
       {
@@ -226,8 +240,11 @@ class JobScheduler {
       }
       log(prefix + ": started");
       rt::gl::GlIdentity gl;
+      results::JobExecution execution = describeJobExecution();  // at the start: its queue wait
       const fs::path job_dir = dir_.prepareJob(*job.job);
       results::JobResult result = executeJob(job, env, job_dir, &gl);
+      if (job.technique) execution.gl_renderer = gl.renderer;
+      result.execution = std::move(execution);
       std::lock_guard lock(state_mutex_);
       if (job.technique && !gl_) gl_ = gl;
       if (result.timings) state.timings[0] = result.timings;
@@ -242,9 +259,30 @@ class JobScheduler {
     bool last = false;
     {
       std::lock_guard lock(state_mutex_);
-      last = --state.remaining == 0;
+      last = --state.remaining == 0 && !state.failed;
     }
     if (last) finish(task.job);
+  }
+
+  // A part's job that threw: recorded as failed once (a resume runs it again), its remaining
+  // tasks skipped, the other jobs go on.
+  void recordFailure(std::size_t index, std::exception_ptr error) {
+    std::string message = "unknown error";
+    try {
+      std::rethrow_exception(error);
+    } catch (const std::exception& e) {
+      message = e.what();
+    } catch (...) {
+    }
+    {
+      std::lock_guard lock(state_mutex_);
+      if (states_[index].failed) return;
+      states_[index].failed = true;
+      ++failed_;
+    }
+    const PreparedJob& job = jobs_[index];
+    dir_.recordFailure(*job.job, job.hash, message);
+    log(fmt::format("[{}/{}] {}: failed: {}", index + 1, jobs_.size(), job.job->id, message));
   }
 
   // Every task of the job has ended: its repeats and conditions join the first run's result,
@@ -277,6 +315,7 @@ class JobScheduler {
   std::vector<JobState> states_;
   std::mutex log_mutex_, state_mutex_;
   std::optional<rt::gl::GlIdentity> gl_;
+  std::size_t failed_ = 0;
 };
 
 }  // namespace
@@ -298,24 +337,118 @@ std::vector<Job> selectJobs(const Suite& suite, const std::vector<std::string>& 
   return selected;
 }
 
+Shard parseShard(const std::string& text) {
+  Shard shard;
+  char slash = 0, rest = 0;
+  std::istringstream in(text);
+  if (!(in >> shard.index >> slash >> shard.count) || slash != '/' || (in >> rest) ||
+      shard.count < 1 || shard.index < 1 || shard.index > shard.count)
+    throw InputError(fmt::format(
+        "--shard '{}' is not a slice; give i/n with 1 <= i <= n (e.g. --shard 2/4)", text));
+  return shard;
+}
+
+std::vector<Job> selectRunJobs(const Suite& suite, const RunOptions& options) {
+  std::vector<Job> selected = selectJobs(suite, options.only);
+  if (!options.job.empty()) {
+    for (Job& job : selected)
+      if (job.id == options.job) return {std::move(job)};
+    throw InputError(
+        fmt::format("suite '{}' has no job '{}'; list its jobs with `gibench run {} "
+                    "--list`",
+                    suite.name, options.job, suite.file.string()));
+  }
+  std::vector<Job> slice;
+  for (std::size_t k = 0; k < selected.size(); ++k)
+    if (int(k % std::size_t(options.shard.count)) == options.shard.index - 1)
+      slice.push_back(std::move(selected[k]));
+  return slice;
+}
+
+namespace {
+
+// The run's state for a fresh run directory.
+RunState freshState(const Suite& suite, const RunOptions& options, const results::RunInfo& info) {
+  RunState state;
+  state.run_id = info.id;
+  state.suite = suite.name;
+  state.suite_file = fs::absolute(suite.file);
+  state.only = options.only;
+  state.started = info.started;
+  return state;
+}
+
+// After the jobs: the run's description, results.json, the CSV and, when every job has its
+// result, the history row.
+RunOutcome assembleRun(const Suite& suite, const RunOptions& options, const RunDirectory& dir,
+                       std::vector<results::JobResult> jobs, std::optional<rt::gl::GlIdentity> gl,
+                       const ConditionsSample& before, RunOutcome outcome) {
+  results::RunInfo info = describeEnvironment();
+  info.id = dir.runId();
+  info.started = dir.started();
+  results::RunResults& run = outcome.results;
+  run.jobs = std::move(jobs);
+  for (std::size_t i = 0; !gl && i < run.jobs.size(); ++i)
+    if (!run.jobs[i].failed()) gl = glOfRecordedJob(dir.path(), run.jobs[i]);
+  if (gl) {
+    info.gl_vendor = gl->vendor;
+    info.gl_renderer = gl->renderer;
+    info.gl_version = gl->version;
+    info.gl_device = gl->device;
+  }
+  info.suite = suite.name;
+  info.suite_description = suite.description;
+  info.suite_file = options.suite_file;
+  info.suite_hash = fileHash(suite.file);
+  info.parallel_jobs = options.parallel_jobs;
+  info.store = options.store_root.string();
+  info.complete = dir.state().only.empty();
+  info.finished = utcTimestamp();
+  info.conditions = conditionsBetween(before, sampleConditions());
+  run.run = info;
+  run.tolerances = suite.tolerances;
+  for (const results::PaperValue& value : suite.paper)
+    if (run.findJob(value.job)) run.paper.push_back(value);
+  run.charts = suite.charts;
+  run.primary_metric = primaryMetric(run.jobs);
+  outcome.failed = std::size_t(
+      std::count_if(run.jobs.begin(), run.jobs.end(), [](const auto& j) { return j.failed(); }));
+
+  outcome.run_dir = dir.path();
+  outcome.results_file = dir.path() / "results.json";
+  results::writeResultsFile(outcome.results_file, run);
+  image::writeTextFile(dir.path() / "results.csv", results::resultsCsv(run));
+  // A run with failed jobs is not history: its gaps would read as changes in the trends.
+  if (!options.history_db.empty() && outcome.failed == 0)
+    outcome.history_row = results::HistoryDatabase::open(options.history_db).append(run);
+  return outcome;
+}
+
+}  // namespace
+
+RunDirectory openRunDirectory(const Suite& suite, const RunOptions& options) {
+  results::RunInfo info = describeEnvironment();
+  info.started = utcTimestamp();
+  info.id = newRunId(suite.name, info);
+  return RunDirectory::open(options.out_dir, freshState(suite, options, info));
+}
+
 RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   if (options.parallel_jobs < 1)
     throw InputError(fmt::format("--jobs {} runs nothing; give 1 or more", options.parallel_jobs));
-  const std::vector<Job> jobs = selectJobs(suite, options.only);
+  const std::vector<Job> jobs = selectRunJobs(suite, options);
   std::vector<PreparedJob> prepared;
   for (const Job& job : jobs) prepared.push_back(prepareJob(job));
   checkResources(options, prepared);
 
   const ConditionsSample before = sampleConditions();
-  results::RunInfo info = describeEnvironment();
-  info.started = utcTimestamp();
-  info.id = newRunId(suite.name, info);
-  const RunDirectory dir = RunDirectory::open(options.out_dir, suite.name, info);
-  info.id = dir.runId();
-  info.started = dir.started();
-  fmt::print(options.log, "{} run {} of suite '{}' ({} jobs) in {}\n",
-             dir.resumed() ? "resuming" : "starting", info.id, suite.name, jobs.size(),
-             dir.path().string());
+  const RunDirectory dir = openRunDirectory(suite, options);
+  std::string what = fmt::format("{} jobs", jobs.size());
+  if (!options.shard.whole())
+    what = fmt::format("shard {}/{}: {}", options.shard.index, options.shard.count, what);
+  fmt::print(options.log, "{} run {} of suite '{}' ({}) in {}\n",
+             dir.resumed() ? (options.part ? "joining" : "resuming") : "starting", dir.runId(),
+             suite.name, what, dir.path().string());
   if (options.parallel_jobs > 1)
     fmt::print(options.log,
                "note: {} jobs at a time share the CPU, so their timings are not comparable with "
@@ -340,40 +473,90 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   JobScheduler scheduler(prepared, dir, options, store, results);
   scheduler.run(pending);
 
-  results::RunResults& run = outcome.results;
-  for (std::optional<results::JobResult>& result : results) run.jobs.push_back(std::move(*result));
-  std::optional<rt::gl::GlIdentity> gl = scheduler.gl();
-  for (std::size_t i = 0; !gl && i < run.jobs.size(); ++i)
-    gl = glOfRecordedJob(dir.path(), run.jobs[i]);
-  if (gl) {
-    info.gl_vendor = gl->vendor;
-    info.gl_renderer = gl->renderer;
-    info.gl_version = gl->version;
-    info.gl_device = gl->device;
+  if (options.part) {
+    outcome.failed = scheduler.failed();
+    outcome.run_dir = dir.path();
+    for (std::optional<results::JobResult>& result : results)
+      if (result) outcome.results.jobs.push_back(std::move(*result));
+    return outcome;
   }
-  info.suite = suite.name;
-  info.suite_description = suite.description;
-  info.suite_file = options.suite_file;
-  info.suite_hash = fileHash(suite.file);
-  info.parallel_jobs = options.parallel_jobs;
-  info.store = options.store_root.string();
-  info.complete = options.only.empty();
-  info.finished = utcTimestamp();
-  info.conditions = conditionsBetween(before, sampleConditions());
-  run.run = info;
-  run.tolerances = suite.tolerances;
-  for (const results::PaperValue& value : suite.paper)
-    if (run.findJob(value.job)) run.paper.push_back(value);
-  run.charts = suite.charts;
-  run.primary_metric = primaryMetric(run.jobs);
+  std::vector<results::JobResult> finished;
+  for (std::optional<results::JobResult>& result : results) finished.push_back(std::move(*result));
+  return assembleRun(suite, options, dir, std::move(finished), scheduler.gl(), before,
+                     std::move(outcome));
+}
 
-  outcome.run_dir = dir.path();
-  outcome.results_file = dir.path() / "results.json";
-  results::writeResultsFile(outcome.results_file, run);
-  image::writeTextFile(dir.path() / "results.csv", results::resultsCsv(run));
-  if (!options.history_db.empty())
-    outcome.history_row = results::HistoryDatabase::open(options.history_db).append(run);
-  return outcome;
+void obtainReferencesOfJob(const Suite& suite, const RunOptions& options) {
+  const std::vector<Job> jobs = selectRunJobs(suite, options);
+  const PreparedJob prepared = prepareJob(jobs.front());
+  ref::ReferenceStore store(options.store_root);
+  JobEnvironment env;
+  env.store = &store;
+  env.progress = options.progress;
+  env.note = [&](const std::string& note) {
+    fmt::print(options.log, "{}: {}\n", jobs.front().id, note);
+    std::fflush(options.log);
+  };
+  obtainJobReferences(prepared, env);
+}
+
+RunOutcome mergeRuns(const std::vector<fs::path>& dirs, const RunOptions& options) {
+  if (dirs.empty()) throw InputError("merge needs at least one run directory");
+  const RunState state = RunDirectory::readState(dirs.front());
+  if (state.suite_file.empty())
+    throw InputError(
+        fmt::format("'{}' was started by a gibench that did not record its suite "
+                    "file; run the suite again to merge it",
+                    dirs.front().string()));
+  for (const fs::path& other : dirs) {
+    const RunState theirs = RunDirectory::readState(other);
+    if (theirs.suite != state.suite)
+      throw InputError(
+          fmt::format("'{}' holds a run of suite '{}', '{}' one of '{}'; merge runs "
+                      "of one suite",
+                      dirs.front().string(), state.suite, other.string(), theirs.suite));
+  }
+  const Suite suite = loadSuiteFile(state.suite_file);
+  RunOptions merged_options = options;
+  merged_options.only = state.only;
+  const std::vector<Job> jobs = selectJobs(suite, state.only);
+  std::vector<PreparedJob> prepared;
+  for (const Job& job : jobs) prepared.push_back(prepareJob(job));
+  const ConditionsSample before = sampleConditions();
+  const fs::path out = options.out_dir.empty() ? dirs.front() : options.out_dir;
+  const RunDirectory dir = RunDirectory::open(out, state);
+
+  RunOutcome outcome;
+  std::vector<results::JobResult> results;
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    std::optional<results::JobResult> result = dir.finishedJob(jobs[i], prepared[i].hash);
+    // Gather the job from the first other run that finished it (a shard on another machine).
+    for (const fs::path& other : dirs) {
+      if (result) break;
+      if (fs::equivalent(other, out)) continue;
+      const RunDirectory theirs = RunDirectory::open(other, state);
+      if (!theirs.finishedJob(jobs[i], prepared[i].hash)) continue;
+      const fs::path target = dir.prepareJob(jobs[i]);
+      fs::copy(theirs.jobDirectory(jobs[i]), target, fs::copy_options::recursive);
+      result = dir.finishedJob(jobs[i], prepared[i].hash);
+    }
+    if (!result) {
+      result = describeJob(prepared[i]);
+      std::optional<std::string> failure = dir.failure(jobs[i], prepared[i].hash);
+      for (std::size_t d = 0; !failure && d < dirs.size(); ++d)
+        failure = RunDirectory::open(dirs[d], state).failure(jobs[i], prepared[i].hash);
+      result->failure = failure.value_or(
+          "no result: its task did not finish (cancelled, pre-empted or crashed); run the "
+          "part again (`--resume`) to complete it");
+      if (const std::optional<fs::path> log =
+              options.log_of ? options.log_of(out, jobs[i].id) : std::nullopt)
+        result->outputs.log = log->lexically_relative(out).generic_string();
+    }
+    results.push_back(std::move(*result));
+  }
+  outcome.skipped = jobs.size();
+  return assembleRun(suite, merged_options, dir, std::move(results), std::nullopt, before,
+                     std::move(outcome));
 }
 
 }  // namespace gib::suites

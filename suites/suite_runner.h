@@ -7,14 +7,28 @@
 
 #include "results/results.h"
 #include "suites/job_expansion.h"
+#include "suites/run_directory.h"
 #include "suites/suite.h"
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace gib::suites {
+
+// The i-th of n deterministic slices of a suite's jobs (`gibench run --shard i/n`): the jobs whose
+// position k (0-based, after --only) has k mod n = i − 1.
+struct Shard {
+  int index = 1;  // 1-based
+  int count = 1;
+  bool whole() const { return count == 1; }
+};
+
+// "3/8" → {3, 8}. Throws gib::InputError unless 1 ≤ i ≤ n.
+Shard parseShard(const std::string& text);
 
 struct RunOptions {
   std::filesystem::path out_dir;
@@ -24,8 +38,19 @@ struct RunOptions {
   int parallel_jobs = 1;
   // Glob patterns ('*', '?') over job ids; a job runs when it matches any. Empty: every job.
   std::vector<std::string> only;
-  std::string gl_device;    // empty: $GIBENCH_GL_DEVICE, else auto
-  bool progress = false;    // progress bars on a terminal
+  Shard shard;      // of the selected jobs
+  std::string job;  // exactly this job id (a Slurm task), when not empty
+  // Parts of a run (a shard, a Slurm task) record their jobs, and a job that fails is recorded as
+  // failed (failed.json) while the others go on; `gibench merge` assembles the whole. A whole run
+  // assembles results.json, the CSV and the history row itself and stops at its first failure.
+  bool part = false;
+  std::string gl_device;  // empty: $GIBENCH_GL_DEVICE, else auto
+  bool progress = false;  // progress bars on a terminal
+  // `gibench merge`: where the log of a job without a result is kept (its Slurm task's output),
+  // if anywhere.
+  std::function<std::optional<std::filesystem::path>(const std::filesystem::path& run_dir,
+                                                     const std::string& job_id)>
+      log_of;
   std::FILE* log = stderr;  // one line per job as it starts and ends
 };
 
@@ -33,6 +58,7 @@ struct RunOutcome {
   results::RunResults results;
   std::size_t ran = 0;      // jobs run now
   std::size_t skipped = 0;  // jobs finished by an earlier, interrupted run
+  std::size_t failed = 0;   // jobs without a result (parts and merges; a whole run throws)
   std::filesystem::path run_dir;
   std::filesystem::path results_file;
   std::int64_t history_row = 0;  // 0 when not recorded
@@ -42,8 +68,27 @@ struct RunOutcome {
 // matches no job.
 std::vector<Job> selectJobs(const Suite& suite, const std::vector<std::string>& only);
 
+// The jobs a run of `options` does: --only's, then its shard, or the one named job.
+std::vector<Job> selectRunJobs(const Suite& suite, const RunOptions& options);
+
+// The run directory `options.out_dir` opened for the suite: the run in it, or a new one (a fresh
+// run id and start). Throws gib::InputError as RunDirectory::open does.
+RunDirectory openRunDirectory(const Suite& suite, const RunOptions& options);
+
 // Throws gib::InputError for bad input found before anything is written (an unloadable scene, a
-// bad parameter, no GL when a technique job needs it, an unusable --out or store).
+// bad parameter, no GL when a technique job needs it, an unusable --out or store). A part
+// (options.part) returns with `results` holding only its own jobs and writes no results.json.
 RunOutcome runSuite(const Suite& suite, const RunOptions& options);
+
+// Renders into the store the references of the job `options.job` (a Slurm CPU task, so that the
+// job's GPU task finds them there), nothing else.
+void obtainReferencesOfJob(const Suite& suite, const RunOptions& options);
+
+// `gibench merge`: assembles the runs in `dirs` (shards of one suite, or one directory that
+// several processes worked in) into `options.out_dir` (default: the first): their job directories
+// gathered, then results.json, the CSV and, when no job failed, the history row, as a whole run
+// writes them. A job with no result is in the results as failed, with its failure record or its
+// Slurm task's log. Throws gib::InputError when a directory holds no run or a run of another suite.
+RunOutcome mergeRuns(const std::vector<std::filesystem::path>& dirs, const RunOptions& options);
 
 }  // namespace gib::suites

@@ -4,6 +4,7 @@
 #include "results/results.h"
 #include "results/results_json.h"
 #include "support/temp_dir.h"
+#include "support/tiny_suite.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -29,42 +30,6 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-// Small enough for seconds per run: a 32x32 Cornell box, a 1024-spp reference with a convergence
-// series, and the direct technique with two shadow filters.
-constexpr const char* kTinySuite = R"(name = "tiny"
-description = "a tiny suite for the tests"
-
-[defaults]
-width = 32
-height = 32
-metrics = ["mse", "relmse", "flip"]
-frames = 2
-warmup = 0
-
-[defaults.reference]
-spp = 1024
-
-[tolerances]
-relmse = { relative = 0.1 }
-
-[[case]]
-scene = "cornell"
-technique = "reference"
-checkpoints = [4, 16, 64]
-
-[[case]]
-scene = "cornell"
-technique = "direct"
-set = { shadow = ["hard", "pcf"], light_samples = 2 }
-
-[[paper]]
-job = "cornell-direct/shadow=pcf"
-quantity = "frame"
-value = 3.5
-unit = "ms"
-source = "a made-up paper"
-)";
-
 void writeFile(const fs::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
@@ -76,7 +41,7 @@ std::string readFile(const fs::path& path) {
 
 class RunCommandTest : public ::testing::Test {
  protected:
-  RunCommandTest() { writeFile(suite(), kTinySuite); }
+  RunCommandTest() { writeFile(suite(), test::kTinySuite); }
 
   fs::path suite() const { return dir_ / "tiny.toml"; }
   fs::path store() const { return dir_ / "store"; }
@@ -261,7 +226,7 @@ TEST_F(RunCommandTest, BadInputStopsBeforeAnythingIsWritten) {
   writeFile(dir_ / "busy" / "notes.txt", "mine");
   expectRefused({}, "is not empty and holds no gibench run", dir_ / "busy");
 
-  writeFile(suite(), std::string(kTinySuite) + R"(
+  writeFile(suite(), std::string(test::kTinySuite) + R"(
 [[case]]
 name = "bad"
 scene = "cornell"
@@ -269,7 +234,7 @@ technique = "direct"
 checkpoints = [1, 2]
 )");
   expectRefused({}, "checkpoints are iteration counts of an iterative technique", dir_ / "c");
-  writeFile(suite(), std::string(kTinySuite) + R"(
+  writeFile(suite(), std::string(test::kTinySuite) + R"(
 [[case]]
 name = "bad"
 scene = "cornell"
@@ -287,7 +252,7 @@ iterations = 5
 TEST_F(RunCommandTest, ARunDirectoryBelongsToOneSuite) {
   const fs::path out = dir_ / "mine";
   ASSERT_EQ(run(out, {"--only", "cornell-reference"}).exit_code, 0);
-  writeFile(suite(), std::string(kTinySuite).replace(0, 13, "name = \"other\""));
+  writeFile(suite(), std::string(test::kTinySuite).replace(0, 13, "name = \"other\""));
   const test::CommandResult r = run(out);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("holds a run of suite 'tiny', not 'other'"));
@@ -310,7 +275,7 @@ namespace {
 // the job's timings the repeat of the median; reference jobs run once; the machine's conditions
 // recorded for the run and each job.
 TEST_F(RunCommandTest, RepeatsTimeEachTechniqueJobSeveralTimes) {
-  std::string suite_text = kTinySuite;
+  std::string suite_text = test::kTinySuite;
   suite_text.replace(suite_text.find("warmup = 0"), 10, "warmup = 0\nrepeats = 3");
   writeFile(suite(), suite_text);
   const fs::path out = dir_ / "out";
@@ -335,12 +300,12 @@ TEST_F(RunCommandTest, RepeatsTimeEachTechniqueJobSeveralTimes) {
     EXPECT_EQ(*job.runMedianMs(), sorted[1]);
   }
   // Repeats are part of what defines a job: a resume with another count runs them again.
-  writeFile(suite(), kTinySuite);
+  writeFile(suite(), test::kTinySuite);
   EXPECT_THAT(run(out, {"--no-history"}).err, Not(HasSubstr("finished by an earlier attempt")));
 }
 
 TEST_F(RunCommandTest, RepeatsOutOfRangeAreRefused) {
-  std::string suite_text = kTinySuite;
+  std::string suite_text = test::kTinySuite;
   suite_text.replace(suite_text.find("warmup = 0"), 10, "warmup = 0\nrepeats = 0");
   writeFile(suite(), suite_text);
   const test::CommandResult r = run(dir_ / "out");

@@ -148,9 +148,9 @@ TEST(ReferenceStore, TwoThreadsObtainingOneKeyRenderOnce) {
   EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{a.entry.key});
 }
 
-TEST(ReferenceStore, TwoStoresOnOneRootEndWithOneWholeEntry) {
-  // Two stores on one root behave like two processes: no shared lock, so both may render; the
-  // rename into place lets exactly one entry survive and leaves no temporary directory.
+TEST(ReferenceStore, TwoStoresOnOneRootRenderOnceAndEndWithOneWholeEntry) {
+  // Two stores on one root behave like two processes (or two hosts on a shared disk): no lock in
+  // memory is shared, only the store's lock directory; one renders, the other waits for its entry.
   TempDir dir;
   const ReferenceSpec spec = smallReferenceSpec();
   StoredReference a, b;
@@ -158,7 +158,10 @@ TEST(ReferenceStore, TwoStoresOnOneRootEndWithOneWholeEntry) {
   std::thread second([&] { b = obtainReference(dir.path(), spec); });
   first.join();
   second.join();
+  EXPECT_NE(a.hit, b.hit) << "exactly one of the two renders";
+  EXPECT_EQ(a.entry.created, b.entry.created);
   EXPECT_TRUE(bitIdentical(a.mean, b.mean));
+  EXPECT_TRUE(fs::is_empty(dir / "locks")) << "the lock is released";
   EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{a.entry.key});
   EXPECT_EQ(ReferenceStore(dir.path()).list().size(), 1u);
 }

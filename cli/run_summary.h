@@ -1,0 +1,20 @@
+// What `gibench run` and `gibench merge` print and write when a whole run is assembled: the HTML
+// report and the job table.
+#pragma once
+
+#include "suites/suite_runner.h"
+
+#include <filesystem>
+
+namespace gib::cli {
+
+// The run's report, compared with the suite's earlier runs in the history database it was
+// recorded in (none without one).
+std::filesystem::path writeRunReport(const suites::RunOutcome& outcome,
+                                     const suites::RunOptions& options, int trend_runs);
+
+// One line per job (primary metric, against the full reference, frame time, seconds; a failed
+// job's failure), then where the results, history row and report are.
+void printRunSummary(const suites::RunOutcome& outcome, const std::filesystem::path& report);
+
+}  // namespace gib::cli
