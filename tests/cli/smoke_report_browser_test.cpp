@@ -5,33 +5,22 @@
 #include "results/results_json.h"
 #include "support/headless_browser.h"
 #include "support/run_command.h"
+#include "support/shrunk_smoke_suite.h"
 #include "support/temp_dir.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <iterator>
-#include <regex>
 
 namespace gib {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string shrunkSmokeSuite() {
-  std::ifstream in(fs::path(GIB_SOURCE_DIR) / "suites" / "smoke.toml");
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  text = std::regex_replace(text, std::regex(R"((width|height) = \d+)"), "$1 = 32");
-  text = std::regex_replace(text, std::regex(R"(spp = \d+)"), "spp = 64");
-  text = std::regex_replace(text, std::regex(R"(checkpoints = \[[^\]]*\])"),
-                            "checkpoints = [4, 16, 64]");
-  return text;
-}
-
 TEST(SmokeReport, EveryPageLoadsInABrowserAndPassesItsSelfCheck) {
   GIB_REQUIRE_CHROMIUM(chromium);
   test::TempDir dir;
-  std::ofstream(dir / "smoke.toml") << shrunkSmokeSuite();
+  std::ofstream(dir / "smoke.toml") << test::shrunkSmokeSuite();
   const fs::path run = dir / "run";
   // Twice, so that the second report has a previous run to colour against and trend charts.
   for (const char* out : {"first", "run"}) {
