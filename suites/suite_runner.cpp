@@ -526,15 +526,18 @@ RunOutcome mergeRuns(const std::vector<fs::path>& dirs, const RunOptions& option
   const fs::path out = options.out_dir.empty() ? dirs.front() : options.out_dir;
   const RunDirectory dir = RunDirectory::open(out, state);
 
+  // The other runs, opened once (their state files read once, not once per job).
+  std::vector<RunDirectory> others;
+  for (const fs::path& other : dirs)
+    if (!fs::equivalent(other, out)) others.push_back(RunDirectory::open(other, state));
+
   RunOutcome outcome;
   std::vector<results::JobResult> results;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     std::optional<results::JobResult> result = dir.finishedJob(jobs[i], prepared[i].hash);
     // Gather the job from the first other run that finished it (a shard on another machine).
-    for (const fs::path& other : dirs) {
+    for (const RunDirectory& theirs : others) {
       if (result) break;
-      if (fs::equivalent(other, out)) continue;
-      const RunDirectory theirs = RunDirectory::open(other, state);
       if (!theirs.finishedJob(jobs[i], prepared[i].hash)) continue;
       const fs::path target = dir.prepareJob(jobs[i]);
       fs::copy(theirs.jobDirectory(jobs[i]), target, fs::copy_options::recursive);
@@ -543,8 +546,8 @@ RunOutcome mergeRuns(const std::vector<fs::path>& dirs, const RunOptions& option
     if (!result) {
       result = describeJob(prepared[i]);
       std::optional<std::string> failure = dir.failure(jobs[i], prepared[i].hash);
-      for (std::size_t d = 0; !failure && d < dirs.size(); ++d)
-        failure = RunDirectory::open(dirs[d], state).failure(jobs[i], prepared[i].hash);
+      for (std::size_t d = 0; !failure && d < others.size(); ++d)
+        failure = others[d].failure(jobs[i], prepared[i].hash);
       result->failure = failure.value_or(
           "no result: its task did not finish (cancelled, pre-empted or crashed); run the "
           "part again (`--resume`) to complete it");
