@@ -1,6 +1,8 @@
 // gibench merge DIR... [--out DIR] [--store DIR] [--db FILE | --no-history] [--trend-runs N]
+//                      [--junit FILE.xml] [--summary FILE.md]
 // Assembles the parts of a run (`gibench run --shard`, the tasks of `gibench run --slurm`) into
 // the whole: results.json, the CSV, the history row and the report, as a local run writes them.
+#include "cli/ci_outputs.h"
 #include "cli/commands.h"
 #include "cli/run_summary.h"
 #include "common/cache_paths.h"
@@ -25,6 +27,7 @@ struct MergeCommandOptions {
   std::string db;
   bool no_history = false;
   int trend_runs = 20;
+  CiOutputs ci;
 };
 
 int runMerge(const MergeCommandOptions& o) {
@@ -32,6 +35,7 @@ int runMerge(const MergeCommandOptions& o) {
     throw InputError("--db and --no-history contradict each other; give one of them");
   if (o.trend_runs < 2)
     throw InputError(fmt::format("--trend-runs {} draws no trend; give 2 or more", o.trend_runs));
+  o.ci.check();
   suites::RunOptions options;
   options.out_dir = o.out;
   options.store_root = o.store.empty() ? defaultStoreRoot() : fs::path(o.store);
@@ -40,7 +44,7 @@ int runMerge(const MergeCommandOptions& o) {
   options.log_of = suites::slurmLogOf;
   std::vector<fs::path> dirs(o.dirs.begin(), o.dirs.end());
   const suites::RunOutcome outcome = suites::mergeRuns(dirs, options);
-  printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs));
+  printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs, o.ci), o.ci);
   if (outcome.failed > 0) {
     fmt::print(stderr, "gibench: {} of {} jobs failed; the report shows why\n", outcome.failed,
                outcome.results.jobs.size());
@@ -65,6 +69,7 @@ CommandRunner addMergeCommand(CLI::App& app) {
   merge->add_option("--db", o->db, "history database (default <store>/history.sqlite)");
   merge->add_flag("--no-history", o->no_history, "do not record the run in a history database");
   merge->add_option("--trend-runs", o->trend_runs, "runs shown in the report's trend charts");
+  o->ci.addOptions(*merge);
   return [o] { return runMerge(*o); };
 }
 

@@ -1,7 +1,9 @@
-// gibench report RESULTS_DIR [--db FILE] [--store DIR] [--trend-runs N]
+// gibench report RESULTS_DIR [--db FILE] [--store DIR] [--trend-runs N] [--junit FILE.xml]
+//                            [--summary FILE.md]
 // (Re)builds the HTML report of a run directory from its results.json, coloured against the
 // suite's previous run and with trends from the history database when there is one (--db, else
 // that of --store, else that of the store the run used).
+#include "cli/ci_outputs.h"
 #include "cli/commands.h"
 #include "cli/history_location.h"
 #include "common/input_error.h"
@@ -24,6 +26,7 @@ struct ReportOptions {
   std::string dir;
   HistoryLocation history;
   std::size_t trend_runs = 20;
+  CiOutputs ci;
 };
 
 void checkRunDirectory(const fs::path& dir) {
@@ -56,9 +59,12 @@ reports::ReportContext historyContext(const results::RunResults& results, Histor
 int runReport(const ReportOptions& o) {
   const fs::path dir = o.dir;
   checkRunDirectory(dir);
+  o.ci.check();
   const results::RunResults results = results::readResultsFile(dir / "results.json");
   const reports::ReportContext context = historyContext(results, o.history, o.trend_runs);
-  fmt::print("{}\n", reports::writeHtmlReport(dir, results, context).string());
+  const fs::path index = reports::writeHtmlReport(dir, results, context);
+  o.ci.write(dir, results, context);
+  fmt::print("{}\n", index.string());
   return 0;
 }
 
@@ -76,6 +82,7 @@ CommandRunner addReportCommand(CLI::App& app) {
   report->add_option("--trend-runs", o->trend_runs, "runs shown in trend charts")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t(1), std::size_t(1000)));
+  o->ci.addOptions(*report);
   return [o] { return runReport(*o); };
 }
 

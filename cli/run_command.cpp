@@ -1,7 +1,9 @@
 // gibench run SUITE.toml [--out DIR] [--store DIR] [--db FILE | --no-history] [--jobs N]
 //                        [--only PATTERN ...] [--list] [--gl-device D] [--trend-runs N]
+//                        [--junit FILE.xml] [--summary FILE.md]
 //                        [--shard I/N | --slurm [--partition-cpu P] [--partition-gpu P]
 //                         [--sbatch-arg ARG ...] [--gpu-sbatch-arg ARG ...] [--resume] [--wait]]
+#include "cli/ci_outputs.h"
 #include "cli/commands.h"
 #include "cli/run_summary.h"
 #include "common/cache_paths.h"
@@ -33,6 +35,7 @@ struct RunCommandOptions {
   bool list = false;
   std::string gl_device;
   int trend_runs = 20;
+  CiOutputs ci;
   std::string shard;
   bool slurm = false;
   suites::SlurmOptions slurm_options;
@@ -67,6 +70,11 @@ void checkModes(const RunCommandOptions& o) {
     throw InputError("--resume needs the run to resume: give its directory with --out");
   if (!o.task_list.empty() && (o.slurm || !o.shard.empty() || o.task_index < 0))
     throw InputError("--task-list is for a Slurm task: give it with --task-index and nothing else");
+  if (o.ci.requested() && (!o.shard.empty() || !o.task_list.empty()))
+    throw InputError(
+        "--junit and --summary describe a whole run, and a --shard part is not one; give them to "
+        "`gibench merge` once every shard has run");
+  o.ci.check();
 }
 
 // A Slurm task: one line of a task list, run as a part of the run in --out.
@@ -85,7 +93,10 @@ int runSlurmTask(const suites::Suite& suite, suites::RunOptions options,
 
 int submitSlurm(const suites::Suite& suite, const suites::RunOptions& options,
                 const RunCommandOptions& o) {
-  const suites::SlurmSubmission submission = suites::submitToSlurm(suite, options, o.slurm_options);
+  // The merge job writes the CI outputs, as it writes the report.
+  suites::SlurmOptions slurm = o.slurm_options;
+  slurm.merge_arguments = o.ci.mergeArguments();
+  const suites::SlurmSubmission submission = suites::submitToSlurm(suite, options, slurm);
   fmt::print("run        {} of suite '{}' in {}\n", submission.run_id, suite.name,
              options.out_dir.string());
   if (submission.finished_earlier > 0)
@@ -137,7 +148,7 @@ int runRun(const RunCommandOptions& o) {
     return outcome.failed == 0 ? 0 : 1;
   }
   const suites::RunOutcome outcome = suites::runSuite(suite, options);
-  printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs));
+  printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs, o.ci), o.ci);
   return 0;
 }
 
@@ -161,6 +172,7 @@ CommandRunner addRunCommand(CLI::App& app) {
   run->add_flag("--list", o->list, "print the job ids (after --only) and exit");
   run->add_option("--gl-device", o->gl_device, "auto | surfaceless | N (EGL device index)");
   run->add_option("--trend-runs", o->trend_runs, "runs shown in the report's trend charts");
+  o->ci.addOptions(*run);  // with --slurm, the merge job writes them
   run->add_option("--shard", o->shard,
                   "run only the i-th of n slices of the jobs (I/N); `gibench merge` assembles "
                   "the shards");

@@ -11,15 +11,18 @@ namespace gib::cli {
 namespace fs = std::filesystem;
 
 fs::path writeRunReport(const suites::RunOutcome& outcome, const suites::RunOptions& options,
-                        int trend_runs) {
+                        int trend_runs, const CiOutputs& ci) {
   reports::ReportContext context;
   if (!options.history_db.empty())
     context = reports::loadReportContext(results::HistoryDatabase::open(options.history_db),
                                          outcome.results, std::size_t(trend_runs));
-  return reports::writeHtmlReport(outcome.run_dir, outcome.results, context);
+  const fs::path index = reports::writeHtmlReport(outcome.run_dir, outcome.results, context);
+  ci.write(outcome.run_dir, outcome.results, context);
+  return index;
 }
 
-void printRunSummary(const suites::RunOutcome& outcome, const fs::path& report) {
+void printRunSummary(const suites::RunOutcome& outcome, const fs::path& report,
+                     const CiOutputs& ci) {
   const results::RunResults& run = outcome.results;
   const std::string metric = run.primary_metric.empty() ? "metric" : run.primary_metric;
   fmt::print("{:<44} {:>12} {:>12} {:>10} {:>8}\n", "job", metric, "full " + metric, "frame ms",
@@ -44,6 +47,8 @@ void printRunSummary(const suites::RunOutcome& outcome, const fs::path& report) 
   fmt::print("results    {}\n", outcome.results_file.string());
   if (outcome.history_row > 0) fmt::print("history    run {}\n", outcome.history_row);
   fmt::print("report     {}\n", report.string());
+  if (!ci.junit.empty()) fmt::print("junit      {}\n", ci.junit);
+  if (!ci.summary.empty()) fmt::print("summary    {}\n", ci.summary);
 }
 
 }  // namespace gib::cli

@@ -1,7 +1,6 @@
 #include "image/display.h"
 
 #include <OpenColorIO/OpenColorIO.h>
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +12,7 @@
 #include <string_view>
 
 #include "common/input_error.h"
-#include "image/atomic_write.h"
+#include "image/display_png.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -128,20 +127,11 @@ void writePng(const fs::path& path, const Image& image, const DisplaySettings& s
   OCIO::PackedImageDesc description(rgb.data(), image.width(), image.height(), 3);
   processor->apply(description);
   // Step 3: 8 bits, magenta where the input was not finite.
-  const std::vector<std::uint8_t> bytes = quantize(rgb, non_finite);
-
-  OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeUInt8);
-  detail::writeAtomically(path, [&](const fs::path& temporary) {
-    std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create("png");
-    if (!output) throw std::logic_error("OpenImageIO has no PNG writer");
-    if (!output->open(temporary.string(), spec) ||
-        !output->write_image(OIIO::TypeUInt8, bytes.data()) || !output->close()) {
-      std::string reason = output->geterror();
-      std::replace(reason.begin(), reason.end(), '\n', ' ');
-      throw InputError("cannot write '" + path.string() + "': " + reason +
-                       "; check that the directory is writable and the disk has space");
-    }
-  });
+  DisplayPicture picture;
+  picture.width = image.width();
+  picture.height = image.height();
+  picture.rgb = quantize(rgb, non_finite);
+  writeDisplayPng(path, picture);
 }
 
 }  // namespace gib::image

@@ -1,8 +1,10 @@
 #include "reports/figure_charts.h"
 
+#include "reports/figure_panels.h"
 #include "reports/html_text.h"
 #include "reports/number_format.h"
 #include "reports/paper_table.h"
+#include "reports/report_labels.h"
 #include "reports/report_page.h"
 #include "results/quantity.h"
 
@@ -10,6 +12,8 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <cctype>
+#include <set>
 
 namespace gib::reports {
 
@@ -23,6 +27,42 @@ std::optional<std::string> seriesValue(const results::JobResult& job, const std:
     return results::parameterText(job, quantity.substr(results::kParameterPrefix.size()));
   const std::optional<double> value = results::quantityValue(job, quantity);
   return value ? std::optional<std::string>(formatNumber(*value)) : std::nullopt;
+}
+
+constexpr std::size_t kMaxSlugLength = 80;
+
+std::string titleSlug(const std::string& title) {
+  std::string slug;
+  for (char c : title) {
+    if (std::isalnum(static_cast<unsigned char>(c)))
+      slug += char(std::tolower(static_cast<unsigned char>(c)));
+    else if (!slug.empty() && slug.back() != '-')
+      slug += '-';
+  }
+  if (slug.size() > kMaxSlugLength) slug.resize(kMaxSlugLength);
+  while (!slug.empty() && slug.back() == '-') slug.pop_back();
+  return slug;
+}
+
+// Links to the figure pages, each with the first panel's picture that the run has.
+std::string figureLinks(const std::filesystem::path& run_dir, const results::RunResults& results) {
+  std::string links;
+  for (const results::FigureSpec& figure : results.figures) {
+    std::string preview;
+    for (const results::FigureSpec::Panel& panel : figure.panels) {
+      const PanelPicture picture = panelPicture(run_dir, results, panel);
+      if (picture.path.empty()) continue;
+      preview = fmt::format("<img src=\"{}\" alt=\"\">", escapeHtml(outputHref(picture.path, 0)));
+      break;
+    }
+    links +=
+        fmt::format("<a class=\"figure-link\" href=\"{}\">{}<span>{}</span></a>\n",
+                    escapeHtml(urlPath(figurePageFile(figure))), preview, escapeHtml(figure.title));
+  }
+  if (links.empty()) return {};
+  return "<p class=\"muted\">The document's figures rebuilt from this run's pictures, each on a "
+         "page of its own with its numbers.</p>\n<div class=\"figure-links\">\n" +
+         links + "</div>\n";
 }
 
 }  // namespace
@@ -52,13 +92,39 @@ SeriesPlot chartPlot(const results::RunResults& results, const results::ChartSpe
   return plot;
 }
 
-std::string figuresSection(const results::RunResults& results) {
+std::string standaloneChartSvg(const results::RunResults& results,
+                               const results::ChartSpec& chart) {
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + seriesChart(chartPlot(results, chart)) +
+         "\n";
+}
+
+std::vector<std::string> chartSlugs(const std::vector<results::ChartSpec>& charts) {
+  std::vector<std::string> slugs;
+  std::set<std::string> given;
+  for (std::size_t i = 0; i < charts.size(); ++i) {
+    std::string base = titleSlug(charts[i].title);
+    if (base.empty()) base = fmt::format("chart-{}", i + 1);
+    std::string slug = base;
+    for (int n = 2; given.contains(slug); ++n) slug = fmt::format("{}-{}", base, n);
+    given.insert(slug);
+    slugs.push_back(slug);
+  }
+  return slugs;
+}
+
+std::string chartSvgFile(const results::RunResults& results, std::size_t index) {
+  return "figures/" + chartSlugs(results.charts).at(index) + ".svg";
+}
+
+std::string figuresSection(const std::filesystem::path& run_dir,
+                           const results::RunResults& results) {
   std::string charts;
   for (const results::ChartSpec& chart : results.charts)
     charts += seriesChart(chartPlot(results, chart)) + "\n";
   const std::string paper = paperTable(results, nullptr);
-  if (charts.empty() && paper.empty()) return {};
-  std::string body;
+  const std::string figures = figureLinks(run_dir, results);
+  if (charts.empty() && paper.empty() && figures.empty()) return {};
+  std::string body = figures;
   if (!charts.empty())
     body +=
         "<p class=\"muted\">Hover over a point for its job. Jobs lacking either quantity "

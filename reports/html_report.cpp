@@ -2,6 +2,9 @@
 
 #include "common/input_error.h"
 #include "image/output_files.h"
+#include "reports/figure_files.h"
+#include "reports/figure_page.h"
+#include "reports/figure_panels.h"
 #include "reports/index_page.h"
 #include "reports/job_page.h"
 #include "reports/report_labels.h"
@@ -42,6 +45,7 @@ void checkSlugs(const results::RunResults& results) {
 fs::path writeHtmlReport(const fs::path& run_dir, const results::RunResults& results,
                          const ReportContext& context) {
   checkSlugs(results);
+  checkFigureNames(results);
   std::error_code ec;
   if (!fs::is_directory(run_dir, ec))
     throw InputError(
@@ -58,8 +62,12 @@ fs::path writeHtmlReport(const fs::path& run_dir, const results::RunResults& res
   for (const results::JobResult& job : results.jobs)
     image::writeTextFile(run_dir / jobPageFile(job),
                          jobPage(run_dir, results, job, comparison, context));
+  // The standalone figures before the figure pages that link them.
+  writeFigureFiles(run_dir, results);
+  for (const results::FigureSpec& figure : results.figures)
+    image::writeTextFile(run_dir / figurePageFile(figure), figurePage(run_dir, results, figure));
   const fs::path index = run_dir / "index.html";
-  image::writeTextFile(index, indexPage(results, comparison));
+  image::writeTextFile(index, indexPage(run_dir, results, comparison));
   return index;
 }
 

@@ -3,8 +3,10 @@
 // frame time per job, coloured against the previous run); report/<slug>.html holds a page per job
 // (reference, technique image, amplified difference and FLIP map to swap between, metric tables,
 // per-pass timing table and bar chart, convergence plot with its fitted slope, the paper's
-// numbers beside ours, trend charts over recent runs). Charts are inline SVG; styles and scripts
-// are inline.
+// numbers beside ours, trend charts over recent runs); report/figure-<name>.html a page per
+// [[figure]] of a figure suite (reports/figure_page.h), and figures/ the standalone files for
+// papers: each chart as SVG, each figure as PNG (reports/figure_files.h). Charts are inline SVG;
+// styles and scripts are inline.
 #pragma once
 
 #include "results/results.h"
@@ -20,8 +22,8 @@ struct ReportContext {
   std::vector<results::RunResults> history;     // recent runs of the suite, oldest first (trends)
 };
 
-// Writes <run_dir>/index.html and <run_dir>/report/*.html for `results`, whose output paths are
-// relative to run_dir. Atomic per file. Returns the path of index.html.
+// Writes <run_dir>/index.html, <run_dir>/report/*.html and <run_dir>/figures/* for `results`,
+// whose output paths are relative to run_dir. Atomic per file. Returns the path of index.html.
 std::filesystem::path writeHtmlReport(const std::filesystem::path& run_dir,
                                       const results::RunResults& results,
                                       const ReportContext& context);

@@ -1,5 +1,6 @@
 #include "reports/image_viewer.h"
 
+#include "image/false_color.h"
 #include "reports/html_text.h"
 #include "reports/report_labels.h"
 #include "reports/svg_charts.h"
@@ -7,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace gib::reports {
@@ -15,14 +17,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Pictures narrower than this are enlarged by a whole factor (pixelated, so pixels stay pixels).
-constexpr int kViewerWidth = 512;
-
 struct Layer {
-  const char* name;    // data-layer: the script's handle
-  const char* button;  // button text
-  std::string alt;     // what the picture shows
-  const std::string* path;
+  const char* name;        // the viewer's handle (viewer.js)
+  const char* label;       // what the layer menus call it
+  std::string alt;         // what the picture shows
+  const std::string* png;  // its PNG: the fallback of a run without linear data
+  bool linear = false;     // in the viewer data
 };
 
 bool exists(const fs::path& run_dir, const std::string& path) {
@@ -30,28 +30,66 @@ bool exists(const fs::path& run_dir, const std::string& path) {
   return fs::is_regular_file(fs::path(path).is_absolute() ? fs::path(path) : run_dir / path, ec);
 }
 
+// The magma colour map as 256 sRGB triples in hex, for the viewer's false colour and FLIP layer:
+// the same map the PNGs use (image/false_color.h), so the two never disagree.
+std::string magmaHex() {
+  std::string hex;
+  for (int i = 0; i < 256; ++i) {
+    float rgb[3];
+    image::magmaSrgb(float(i) / 255.0f, rgb);
+    for (float c : rgb)
+      hex += fmt::format("{:02x}", int(std::lround(std::clamp(c, 0.0f, 1.0f) * 255)));
+  }
+  return hex;
+}
+
+std::string selectMenu(const char* role, const char* label, const std::vector<Layer>& layers,
+                       const char* chosen) {
+  std::string options;
+  for (const Layer& layer : layers)
+    options += fmt::format("<option value=\"{}\"{}>{}</option>", layer.name,
+                           std::string_view(layer.name) == chosen ? " selected" : "", layer.label);
+  return fmt::format("<label>{} <select data-role=\"{}\">{}</select></label>", label, role,
+                     options);
+}
+
 }  // namespace
 
 std::string imageViewer(const fs::path& run_dir, const results::JobResult& job) {
   const results::JobOutputs& out = job.outputs;
   const bool is_reference = job.technique == "reference";
+  const bool job_data = !out.viewer_data.empty() && exists(run_dir, out.viewer_data);
+  const bool reference_data =
+      !out.reference_viewer_data.empty() && exists(run_dir, out.reference_viewer_data);
+  const bool linear = job_data && reference_data;
+  const bool has_image = !out.image_png.empty() && exists(run_dir, out.image_png);
   const std::vector<Layer> candidates = {
       {"reference", "Reference", fmt::format("Reference ({})", job.reference.path_class),
-       &out.reference_png},
+       &out.reference_png, reference_data},
       {"image", is_reference ? "Test render" : "Image",
        is_reference ? "Test render of the reference renderer" : "Image of " + job.technique,
-       &out.image_png},
-      {"difference", "Difference", "Difference from the reference, amplified", &out.difference_png},
-      {"flip", "FLIP", "FLIP error map (magma colour map, scale below)", &out.flip_png},
+       &out.image_png, job_data && has_image},
+      {"difference", "Difference", "Difference from the reference", &out.difference_png,
+       linear && has_image},
+      {"flip", "FLIP", "FLIP error map (magma colour map, scale below)", &out.flip_png,
+       job_data && !out.flip_png.empty()},
+      {"stderr", "Standard error", "Standard error of the reference's mean",
+       &out.reference_viewer_data, reference_data},
   };
   std::vector<Layer> layers;
   std::vector<std::string> absent;
+  std::string pngs;
   for (const Layer& layer : candidates) {
-    if (layer.path->empty()) continue;
-    if (exists(run_dir, *layer.path))
-      layers.push_back(layer);
-    else
-      absent.push_back(*layer.path);
+    const bool png = layer.png != &out.reference_viewer_data && !layer.png->empty();
+    if (png && !exists(run_dir, *layer.png)) {
+      absent.push_back(*layer.png);
+      continue;
+    }
+    if (png)
+      pngs += fmt::format("<img class=\"layer\" data-layer=\"{}\" src=\"{}\" alt=\"{}\">",
+                          layer.name, escapeHtml(outputHref(*layer.png, 1)), escapeHtml(layer.alt));
+    // The standard error exists only as linear data (a reference of one replica has none).
+    if (png || (layer.linear && std::string_view(layer.name) == "stderr")) layers.push_back(layer);
   }
   std::string notes;
   if (!absent.empty()) {
@@ -61,35 +99,46 @@ std::string imageViewer(const fs::path& run_dir, const results::JobResult& job) 
         "<p class=\"note\">Listed in the results but absent when the report was written: {}.</p>\n",
         list);
   }
-  if (layers.empty())
+  if (layers.empty() || job.width <= 0 || job.height <= 0)
     return notes + "<p class=\"note\">No pictures were written for this job.</p>\n";
 
   const auto has = [&](const char* name) {
     return std::any_of(layers.begin(), layers.end(),
                        [&](const Layer& l) { return std::string_view(l.name) == name; });
   };
-  const char* shown = has("image") ? "image" : layers.front().name;
-  const int scale = job.width > 0 ? std::max(1, kViewerWidth / job.width) : 1;
-  const std::string size =
-      job.width > 0 && job.height > 0
-          ? fmt::format(" width=\"{}\" height=\"{}\"", job.width * scale, job.height * scale)
-          : std::string();
-  std::string buttons, images;
-  for (const Layer& layer : layers) {
-    buttons += fmt::format("<button type=\"button\" data-layer=\"{}\">{}</button>", layer.name,
-                           layer.button);
-    images += fmt::format("<img class=\"layer\" data-layer=\"{}\" src=\"{}\" alt=\"{}\"{}{}>",
-                          layer.name, escapeHtml(outputHref(*layer.path, 1)), escapeHtml(layer.alt),
-                          size, std::string_view(layer.name) == shown ? "" : " hidden");
+  const char* a = has("reference") ? "reference" : layers.front().name;
+  const char* b = has("image") ? "image" : has("stderr") ? "stderr" : layers.back().name;
+  std::string data_attributes, scripts;
+  if (linear) {
+    data_attributes =
+        fmt::format(" data-job-data=\"{}\" data-reference-data=\"{}\"", escapeHtml(out.viewer_data),
+                    escapeHtml(out.reference_viewer_data));
+    for (const std::string* path : {&out.reference_viewer_data, &out.viewer_data})
+      scripts += fmt::format("<script src=\"{}\"></script>\n", escapeHtml(outputHref(*path, 1)));
   }
   std::string html = fmt::format(
-      "<div class=\"viewer\" data-show=\"{}\">\n<div>{}</div>\n"
-      "<div class=\"viewer-stage\">{}</div>\n<p class=\"viewer-caption muted\"></p>\n</div>\n",
-      shown, buttons, images);
-  if (has("reference") && has("image"))
-    html +=
-        "<p class=\"muted\">Hover over the picture to swap between the reference and the "
-        "image.</p>\n";
+      "<div class=\"viewer\" data-width=\"{}\" data-height=\"{}\" data-a=\"{}\" data-b=\"{}\"{} "
+      "data-magma=\"{}\">\n<div class=\"viewer-tools\">{} {} <span class=\"viewer-modes\">"
+      "<button type=\"button\" data-mode=\"side\">Side by side</button><button type=\"button\" "
+      "data-mode=\"wipe\">Wipe</button></span> <label>Exposure <input type=\"range\" "
+      "data-role=\"exposure\" min=\"-10\" max=\"10\" step=\"0.5\" value=\"0\"> <output "
+      "data-role=\"exposure-value\">+0 EV</output></label> <label><input type=\"checkbox\" "
+      "data-role=\"false-colour\"> False colour</label> <span class=\"viewer-zoom\">Zoom <button "
+      "type=\"button\" data-zoom=\"out\">−</button><output data-role=\"zoom\"></output><button "
+      "type=\"button\" data-zoom=\"in\">+</button><button type=\"button\" "
+      "data-zoom=\"fit\">Fit</button></span></div>\n<div class=\"viewer-stage\"><canvas "
+      "data-pane=\"a\"></canvas><canvas data-pane=\"b\"></canvas></div>\n<input type=\"range\" "
+      "data-role=\"wipe\" class=\"viewer-wipe\" min=\"0\" max=\"1\" step=\"0.001\" value=\"0.5\" "
+      "aria-label=\"wipe position\" hidden>\n<p class=\"viewer-readout\" data-role=\"readout\">"
+      "Point at a pixel for its values; click to pin it.</p>\n<div class=\"viewer-sources\" "
+      "hidden>{}</div>\n</div>\n{}",
+      job.width, job.height, a, b, data_attributes, magmaHex(), selectMenu("a", "Left", layers, a),
+      selectMenu("b", "Right", layers, b), pngs, scripts);
+  html += linear ? "<p class=\"muted\">Wheel: zoom about the pointer · drag: pan (in wipe mode, "
+                   "drag the line to move it) · exposure and false colour act on the linear "
+                   "values · the view is kept in the address, to link to.</p>\n"
+                 : "<p class=\"note\">This run has no linear viewer data (written before the "
+                   "viewer had it): the pictures are its PNGs, without exposure or values.</p>\n";
   if (has("flip")) html += flipColorBar() + "\n";
   return html + notes;
 }

@@ -1,8 +1,10 @@
-// The image viewer of a job page: the class reference, the job's image, the amplified difference
-// and the FLIP map (with its colour bar), one shown at a time; buttons choose one, and hovering
-// the image swaps between the reference and the job's image. Only outputs that exist when the
-// report is written are shown: a job without a FLIP map (or a reference job without a separate
-// reference picture) simply has fewer buttons, never a broken image.
+// The image viewer of a job page (driven by reports/assets/viewer.js): two panes side by side or a
+// wipe between them, each showing one layer (reference, image, difference, FLIP map, the
+// reference's standard error), synchronised zoom and pan, exposure and false colour on the linear
+// values, and the values under the pointer. The linear values come from the job's viewer data
+// (JobOutputs::viewer_data and reference_viewer_data, loaded with <script src> so the page opens
+// from disk); the PNGs are in the page as well, for a run written before viewer data existed.
+// Only outputs that exist when the report is written are offered: never a broken image.
 #pragma once
 
 #include "results/results.h"

@@ -16,6 +16,27 @@ namespace gib::reports {
 
 namespace {
 
+namespace fs = std::filesystem;
+
+// A picture of the index (one directory level: paths as they are), or nothing when the file is
+// not there.
+std::string thumbnail(const fs::path& run_dir, const std::string& path, const std::string& alt,
+                      const char* css_class = "thumb") {
+  std::error_code ec;
+  if (path.empty() ||
+      !fs::is_regular_file(fs::path(path).is_absolute() ? fs::path(path) : run_dir / path, ec))
+    return {};
+  return fmt::format("<img class=\"{}\" src=\"{}\" alt=\"{}\" decoding=\"async\">", css_class,
+                     escapeHtml(outputHref(path, 0)), escapeHtml(alt));
+}
+
+// The job's small picture: its thumbnail, else (a run written before thumbnails) its image.
+std::string jobThumbnail(const fs::path& run_dir, const results::JobResult& job) {
+  const std::string& path =
+      !job.outputs.thumbnail_png.empty() ? job.outputs.thumbnail_png : job.outputs.image_png;
+  return thumbnail(run_dir, path, "Image of " + job.id);
+}
+
 std::string runFacts(const results::RunInfo& run) {
   const std::string gl = run.gl_renderer.empty() ? std::string()
                                                  : fmt::format("{} ({}, {})", run.gl_renderer,
@@ -72,7 +93,7 @@ std::string toleranceText(const results::Tolerance& t) {
   return fmt::format("±max({}, {}·|previous|)", formatNumber(t.absolute), formatNumber(t.relative));
 }
 
-std::string regressionsSection(const results::RunResults& results,
+std::string regressionsSection(const fs::path& run_dir, const results::RunResults& results,
                                const RunComparison& comparison) {
   if (!comparison.hasPrevious()) return {};
   const results::DiffReport& diff = *comparison.diff();
@@ -97,7 +118,30 @@ std::string regressionsSection(const results::RunResults& results,
     if (p.verdict == results::Verdict::kMissing)
       table.addRow({escapeHtml(p.job), "the job", "ran", "missing", "", ""});
   if (table.empty()) return {};
-  return htmlSection("regressions", "Regressions", table.html());
+  // Like a render-test report: each regressed job's reference, image and difference side by side.
+  std::set<std::string> shown;
+  std::string pictures;
+  const auto picture = [&](const results::JobResult& job, const std::string& path,
+                           const char* caption) {
+    const std::string img = thumbnail(run_dir, path, std::string(caption) + " of " + job.id);
+    return img.empty()
+               ? std::string()
+               : fmt::format("<figure>{}<figcaption>{}</figcaption></figure>", img, caption);
+  };
+  const auto add = [&](const std::string& id) {
+    const results::JobResult* job = results.findJob(id);
+    if (!job || !shown.insert(id).second) return;
+    pictures += fmt::format(
+        "<div class=\"regressed-job\"><div>{}</div><div class=\"thumbs\">{}{}{}</div></div>\n",
+        jobLink(results, id), picture(*job, job->outputs.reference_png, "reference"),
+        picture(*job, job->outputs.image_png, "image"),
+        picture(*job, job->outputs.difference_png, "difference"));
+  };
+  for (const results::MetricChange& c : diff.metrics)
+    if (c.verdict == results::Verdict::kRegressed) add(c.job);
+  for (const results::TimingChange& c : diff.timings)
+    if (c.verdict == results::Verdict::kRegressed) add(c.job);
+  return htmlSection("regressions", "Regressions", pictures + table.html());
 }
 
 // Scenes in suite order; techniques with the reference first, then in suite order.
@@ -115,16 +159,17 @@ std::vector<std::string> orderedUnique(const std::vector<results::JobResult>& jo
   return names;
 }
 
-std::string matrixEntry(const results::RunResults& results, const results::JobResult& job,
-                        bool name_case, const RunComparison& comparison) {
+std::string matrixEntry(const fs::path& run_dir, const results::RunResults& results,
+                        const results::JobResult& job, bool name_case,
+                        const RunComparison& comparison) {
   const std::optional<JobComparison> compared = comparison.job(job.id);
   std::string label = sweepLabel(job);
   if (name_case || label.empty())
     label = label.empty() ? job.case_name : job.case_name + " " + label;
-  std::string html =
-      fmt::format("<div class=\"job {}\"><a href=\"{}\">{}</a>",
-                  verdictClass(compared ? std::optional(compared->overall) : std::nullopt),
-                  escapeHtml(urlPath(jobPageFile(job))), escapeHtml(label));
+  std::string html = fmt::format(
+      "<div class=\"job {}\"><a href=\"{}\">{}<br>{}</a>",
+      verdictClass(compared ? std::optional(compared->overall) : std::nullopt),
+      escapeHtml(urlPath(jobPageFile(job))), jobThumbnail(run_dir, job), escapeHtml(label));
   if (job.failed()) html += "<div class=\"failure\">failed</div>";
   if (const std::optional<double> value = job.metric(results.primary_metric)) {
     const results::MetricChange* change =
@@ -139,7 +184,8 @@ std::string matrixEntry(const results::RunResults& results, const results::JobRe
   return html + "</div>";
 }
 
-std::string matrixSection(const results::RunResults& results, const RunComparison& comparison) {
+std::string matrixSection(const fs::path& run_dir, const results::RunResults& results,
+                          const RunComparison& comparison) {
   const std::vector<std::string> scenes =
       orderedUnique(results.jobs, &results::JobResult::scene, "");
   const std::vector<std::string> techniques =
@@ -148,7 +194,18 @@ std::string matrixSection(const results::RunResults& results, const RunCompariso
   for (const std::string& technique : techniques) columns.push_back({technique});
   HtmlTable table(columns, "matrix");
   for (const std::string& scene : scenes) {
-    std::vector<std::string> cells = {escapeHtml(scene)};
+    // Without a reference job in the run, the row shows the scene's reference beside its name.
+    std::string scene_cell = escapeHtml(scene);
+    if (std::none_of(results.jobs.begin(), results.jobs.end(), [&](const results::JobResult& j) {
+          return j.scene == scene && j.technique == "reference";
+        }))
+      for (const results::JobResult& job : results.jobs)
+        if (job.scene == scene) {
+          scene_cell += "<br>" + thumbnail(run_dir, job.outputs.reference_png,
+                                           "Reference of " + scene, "thumb reference");
+          break;
+        }
+    std::vector<std::string> cells = {scene_cell};
     for (const std::string& technique : techniques) {
       std::vector<const results::JobResult*> jobs;
       std::set<std::string> cases;
@@ -159,29 +216,32 @@ std::string matrixSection(const results::RunResults& results, const RunCompariso
         }
       std::string cell;
       for (const results::JobResult* job : jobs)
-        cell += matrixEntry(results, *job, cases.size() > 1, comparison);
+        cell += matrixEntry(run_dir, results, *job, cases.size() > 1, comparison);
       cells.push_back(cell);
     }
     table.addRow(cells);
   }
   const std::string intro = fmt::format(
-      "<p class=\"muted\">Each job: {} against the reference of its path class, and the median "
-      "frame time. Follow a job to its images, metrics and timings.</p>\n",
+      "<p class=\"muted\">Each job: its image, {} against the reference of its path class and the "
+      "median frame time, with the change from the previous run in brackets. Follow a job to its "
+      "images, metrics and timings.</p>\n",
       escapeHtml(results.primary_metric.empty() ? "the error" : results.primary_metric));
   return htmlSection("matrix", "Scenes × techniques", intro + table.html());
 }
 
 }  // namespace
 
-std::string indexPage(const results::RunResults& results, const RunComparison& comparison) {
+std::string indexPage(const fs::path& run_dir, const results::RunResults& results,
+                      const RunComparison& comparison) {
   std::string body = fmt::format("<h1>GI Bench report: {}</h1>\n", escapeHtml(results.run.suite));
   if (!results.run.suite_description.empty())
     body += fmt::format("<p>{}</p>\n", escapeHtml(results.run.suite_description));
-  body += htmlSection("run", "Run", runFacts(results.run));
+  // Pictures first: what changed, then every job; the run's facts last.
   body += htmlSection("comparison", "Against the previous run", comparisonIntro(comparison));
-  body += regressionsSection(results, comparison);
-  body += matrixSection(results, comparison);
-  body += figuresSection(results);
+  body += regressionsSection(run_dir, results, comparison);
+  body += matrixSection(run_dir, results, comparison);
+  body += figuresSection(run_dir, results);
+  body += htmlSection("run", "Run", runFacts(results.run));
   return htmlPage(fmt::format("GI Bench: {} ({})", results.run.suite, results.run.id), body);
 }
 

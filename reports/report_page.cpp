@@ -30,9 +30,9 @@ std::string htmlPage(std::string_view title, std::string_view body) {
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>{}</title>\n<link rel=\"icon\" href=\"data:,\">\n<style>{}</style>\n</head>\n"
       "<body>\n<div id=\"report-check\" role=\"alert\" hidden></div>\n{}\n<script>{}</script>\n"
-      "</body>\n</html>\n",
+      "<script>{}</script>\n</body>\n</html>\n",
       escapeHtml(title), asset("reports/assets/report.css"), body,
-      asset("reports/assets/report.js"));
+      asset("reports/assets/viewer.js"), asset("reports/assets/report.js"));
 }
 
 std::string htmlSection(std::string_view id, std::string_view heading, std::string_view body) {

@@ -9,12 +9,12 @@
 
 namespace gib::reports {
 
-// A whole document. `body` is HTML. The page carries a script that, when the window has loaded,
-// checks that every <img> decoded (complete, naturalWidth > 0) and every chart <svg> has a
-// non-empty bounding box (and that each image viewer shows exactly one picture), and records the
-// outcome as data-report-check="ok" or "failed: <what>" on <html>; on failure it also shows a
-// banner naming what is missing (a report copied without its images). Job pages' image viewers are
-// driven by the same script.
+// A whole document. `body` is HTML. The page carries the image viewer's script (viewer.js, which
+// drives the job pages' viewers) and a self-check that, when the window has loaded, checks that
+// every <img> decoded (complete, naturalWidth > 0), every image viewer is ready with the viewer
+// data it names, and every chart <svg> has a non-empty bounding box, and records the outcome as
+// data-report-check="ok" or "failed: <what>" on <html>; on failure it also shows a banner naming
+// what is missing (a report copied without its images).
 std::string htmlPage(std::string_view title, std::string_view body);
 
 // <section> with an <h2> heading (escaped) and `body` (HTML).

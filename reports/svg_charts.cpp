@@ -273,7 +273,9 @@ std::string seriesChart(const SeriesPlot& plot) {
     if (drawn[s].size() >= 2) {
       std::vector<std::pair<double, double>> line;
       for (const ChartPoint& p : drawn[s]) line.emplace_back(px(p.x), py(p.y));
-      svg.polyline(line, fmt::format(R"(stroke="{}" stroke-width="1.5" fill="none")", color));
+      // polyline() writes fill="none" itself: an attribute given twice is not XML, and the
+      // chart is also written as a standalone .svg file (reports/figure_charts.h).
+      svg.polyline(line, fmt::format(R"(stroke="{}" stroke-width="1.5")", color));
     }
     for (const ChartPoint& p : drawn[s]) {
       std::string tooltip = fmt::format("{}: {} {}, {} {}", p.label, plot.x_label,

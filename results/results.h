@@ -63,6 +63,10 @@ struct PaperValue {
   std::string unit;    // "ms", "" for a ratio
   std::string source;  // "Nijasure et al. 2005, Table 1"
   std::string note;    // "Radeon 9800 Pro, 64x64 grid"
+  // Relative: ours reproduces the value when |ours − value| ≤ tolerance·|value|. Unset for a
+  // number we only show (a frame time from other hardware); a value outside its tolerance fails
+  // the job in `--junit` (reports/paper_check.h).
+  std::optional<double> tolerance = std::nullopt;
   bool operator==(const PaperValue&) const = default;
 };
 
@@ -77,6 +81,30 @@ struct ChartSpec {
   bool log_x = false, log_y = false;
   bool front = false;  // mark the Pareto front: the points no other point beats in both x and y
   bool operator==(const ChartSpec&) const = default;
+};
+
+// A figure of a figure suite (`[[figure]]`): jobs' pictures in a grid, laid out as the source
+// document's figure, each with a caption and one of the job's numbers under it. The report
+// gives it a page (report/figure-<name>.html) and a composite picture (figures/<name>.png).
+struct FigureSpec {
+  struct Panel {
+    std::string job;  // a job id of the suite
+    // "image", "reference", "difference", "flip" or "aux:<name>" (an auxiliary image of the job,
+    // known only once it ran: a panel whose picture the results lack shows a note instead).
+    std::string image;
+    std::string caption;
+    int row = 1, column = 1;  // 1-based cell, resolved when the suite is read
+    // A quantity (results/quantity.h) printed under the picture, "none" for no number; empty:
+    // the run's primary metric.
+    std::string metric;
+    bool operator==(const Panel&) const = default;
+  };
+  std::string name;  // a slug, unique in the suite: the page's and the PNG's file name
+  std::string title;
+  std::string caption;
+  int columns = 1;            // cells per row
+  std::vector<Panel> panels;  // file order
+  bool operator==(const FigureSpec&) const = default;
 };
 
 // The machine's state around a run or a job, recorded so that a noisy timing can be seen as such
@@ -159,6 +187,11 @@ struct JobOutputs {
   std::string flip_png;        // the FLIP map (magma), when flip was measured
   std::string timings_json;    // full per-pass timings with every frame's samples
   std::string log;             // a failed job's log (its scheduler task's output), when kept
+  std::string thumbnail_png;   // image_png (or the reference's) at most 128 pixels wide
+  // The report viewer's linear data (image/viewer_data.h): the job's image and FLIP map, and
+  // the reference's mean and standard error (one file per reference, shared by its jobs).
+  std::string viewer_data;
+  std::string reference_viewer_data;
   bool operator==(const JobOutputs&) const = default;
 };
 
@@ -238,6 +271,7 @@ struct RunResults {
   std::string primary_metric;
   std::vector<PaperValue> paper;
   std::vector<ChartSpec> charts;
+  std::vector<FigureSpec> figures;
   std::vector<JobResult> jobs;  // suite order
   bool operator==(const RunResults&) const = default;
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -87,6 +88,22 @@ const std::array<JsonMember<ChartSpec>, 8> kChartMembers = {{
     jsonMember<&ChartSpec::log_x>("log_x"),
     jsonMember<&ChartSpec::log_y>("log_y"),
     jsonMember<&ChartSpec::front>("front"),
+}};
+
+const std::array<JsonMember<FigureSpec>, 4> kFigureMembers = {{
+    jsonMember<&FigureSpec::name>("name"),
+    jsonMember<&FigureSpec::title>("title"),
+    jsonMember<&FigureSpec::caption>("caption"),
+    jsonMember<&FigureSpec::columns>("columns"),
+}};
+
+const std::array<JsonMember<FigureSpec::Panel>, 6> kPanelMembers = {{
+    jsonMember<&FigureSpec::Panel::job>("job"),
+    jsonMember<&FigureSpec::Panel::image>("image"),
+    jsonMember<&FigureSpec::Panel::caption>("caption"),
+    jsonMember<&FigureSpec::Panel::row>("row"),
+    jsonMember<&FigureSpec::Panel::column>("column"),
+    jsonMember<&FigureSpec::Panel::metric>("metric"),
 }};
 
 const std::array<JsonMember<AuxiliaryImageOutput>, 4> kAuxiliaryImageMembers = {{
@@ -205,6 +222,13 @@ json tolerancesToJson(const Tolerances& t) {
           {"timing", membersToJson(t.timing, kTimingToleranceMembers)}};
 }
 
+json figureToJson(const FigureSpec& f) {
+  json out = membersToJson(f, kFigureMembers);
+  json& panels = out["panels"] = json::array();
+  for (const FigureSpec::Panel& p : f.panels) panels.push_back(membersToJson(p, kPanelMembers));
+  return out;
+}
+
 json convergenceToJson(const Convergence& c) {
   json out = membersToJson(c, kConvergenceMembers);
   json& points = out["points"] = json::array();
@@ -242,6 +266,21 @@ Tolerances readTolerances(const JsonField& f) {
   });
   t.timing = membersFromJson(f.at("timing"), kTimingToleranceMembers);
   return t;
+}
+
+// The cells are checked here because the report lays the grid out from them: a hand-edited
+// file must not place a panel outside its figure.
+FigureSpec readFigure(const JsonField& f) {
+  FigureSpec figure = membersFromJson(f, kFigureMembers);
+  if (figure.columns < 1) f.at("columns").fail("must be 1 or more");
+  f.at("panels").forEachElement([&](const JsonField& p) {
+    FigureSpec::Panel panel = membersFromJson(p, kPanelMembers);
+    if (panel.row < 1) p.at("row").fail("must be 1 or more");
+    if (panel.column < 1 || panel.column > figure.columns)
+      p.at("column").fail(fmt::format("must be in [1, {}] (the figure's columns)", figure.columns));
+    figure.panels.push_back(std::move(panel));
+  });
+  return figure;
 }
 
 Convergence readConvergence(const JsonField& f) {
@@ -318,7 +357,13 @@ JobResult readJob(const JsonField& f) {
   if (auto execution = f.find("execution"))
     j.execution = membersFromJson(*execution, kExecutionMembers);
   if (auto failure = f.find("failure")) j.failure = failure->asString();
-  if (auto log = f.at("outputs").find("log")) j.outputs.log = log->asString();
+  // Optional outputs, added after version 1 (absent from older files).
+  const JsonField outputs = f.at("outputs");
+  if (auto log = outputs.find("log")) j.outputs.log = log->asString();
+  if (auto png = outputs.find("thumbnail_png")) j.outputs.thumbnail_png = png->asString();
+  if (auto data = outputs.find("viewer_data")) j.outputs.viewer_data = data->asString();
+  if (auto data = outputs.find("reference_viewer_data"))
+    j.outputs.reference_viewer_data = data->asString();
   return j;
 }
 
@@ -420,14 +465,24 @@ json jobToJson(const JobResult& j) {
   out["execution"] = membersToJson(j.execution, kExecutionMembers);
   out["failure"] = j.failure;
   out["outputs"]["log"] = j.outputs.log;
+  out["outputs"]["thumbnail_png"] = j.outputs.thumbnail_png;
+  out["outputs"]["viewer_data"] = j.outputs.viewer_data;
+  out["outputs"]["reference_viewer_data"] = j.outputs.reference_viewer_data;
   return out;
 }
 
 json resultsToJson(const RunResults& results) {
   json paper = json::array();
-  for (const PaperValue& p : results.paper) paper.push_back(membersToJson(p, kPaperValueMembers));
+  for (const PaperValue& p : results.paper) {
+    json value = membersToJson(p, kPaperValueMembers);
+    // Absent when not set: a number shown for comparison only.
+    if (p.tolerance) value["tolerance"] = numberToJson(*p.tolerance);
+    paper.push_back(std::move(value));
+  }
   json charts = json::array();
   for (const ChartSpec& c : results.charts) charts.push_back(membersToJson(c, kChartMembers));
+  json figures = json::array();
+  for (const FigureSpec& f : results.figures) figures.push_back(figureToJson(f));
   json jobs = json::array();
   for (const JobResult& j : results.jobs) jobs.push_back(jobToJson(j));
   json run = membersToJson(results.run, kRunInfoMembers);
@@ -439,6 +494,7 @@ json resultsToJson(const RunResults& results) {
           {"primary_metric", results.primary_metric},
           {"paper", std::move(paper)},
           {"charts", std::move(charts)},
+          {"figures", std::move(figures)},
           {"jobs", std::move(jobs)}};
 }
 
@@ -452,11 +508,22 @@ RunResults resultsFromJson(const json& document, const std::string& source) {
     results.run.conditions = membersFromJson(*conditions, kConditionsMembers);
   results.tolerances = readTolerances(top.at("tolerances"));
   results.primary_metric = top.at("primary_metric").asString();
-  top.at("paper").forEachElement(
-      [&](const JsonField& p) { results.paper.push_back(membersFromJson(p, kPaperValueMembers)); });
+  top.at("paper").forEachElement([&](const JsonField& p) {
+    PaperValue value = membersFromJson(p, kPaperValueMembers);
+    // Added after version 1: optional.
+    if (const std::optional<JsonField> tolerance = p.find("tolerance")) {
+      value.tolerance = tolerance->asNumber();
+      if (!(std::isfinite(*value.tolerance) && *value.tolerance >= 0))
+        tolerance->fail("must be a finite number ≥ 0 (relative to the paper's value)");
+    }
+    results.paper.push_back(std::move(value));
+  });
   if (auto charts = top.find("charts"))
     charts->forEachElement(
         [&](const JsonField& c) { results.charts.push_back(membersFromJson(c, kChartMembers)); });
+  // Added after version 1: absent from older files.
+  if (auto figures = top.find("figures"))
+    figures->forEachElement([&](const JsonField& f) { results.figures.push_back(readFigure(f)); });
   top.at("jobs").forEachElement([&](const JsonField& j) { results.jobs.push_back(readJob(j)); });
   return results;
 }

@@ -19,8 +19,8 @@ packages=(
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   # Tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
-  # Report tests: headless browser
-  chromium
+  # Report tests: headless browser; xmllint validates the JUnit output against its schema
+  chromium libxml2-utils
   # The cross-check against Cycles (scripts/cross-check-cycles.sh) and its test
   blender
   # Suites on Slurm (gibench run --slurm): the client, and a one-node cluster for the tests

@@ -7,6 +7,7 @@
 #include "image/display.h"
 #include "image/exr_io.h"
 #include "image/output_files.h"
+#include "image/viewer_data.h"
 #include "metrics/convergence_fit.h"
 #include "metrics/error_map_display.h"
 #include "metrics/metric_registry.h"
@@ -129,26 +130,58 @@ void fitConvergence(results::Convergence& convergence) {
   convergence.fit_slope_ci95 = fit.slope_ci95;
 }
 
+// Thumbnails are at most this wide: a 100-job index stays light however large the images are.
+constexpr int kThumbnailWidth = 128;
+
+// The report viewer's linear data of the reference (mean and standard error of the mean), once
+// per reference and run: every job measured against it shares the file.
+std::string writeReferenceViewerData(const fs::path& run_dir,
+                                     const ref::StoredReference& reference) {
+  const fs::path path = run_dir / "viewer" / (reference.entry.key + ".js");
+  const std::string relative = relativePath(run_dir, path);
+  std::error_code ec;
+  if (fs::is_regular_file(path, ec)) return relative;  // written by another job of the run
+  fs::create_directories(path.parent_path(), ec);
+  image::Image standard_error;
+  if (reference.variance.pixelCount() > 0) {
+    standard_error = reference.variance;
+    for (float& value : standard_error.data()) value = std::sqrt(std::max(value, 0.0f));
+  }
+  image::writeViewerData(path, relative,
+                         {{"reference", &reference.mean}, {"stderr", &standard_error}});
+  return relative;
+}
+
 // reference.png (a copy of the store's, so the run directory stands alone), difference.png and
-// flip.png of `test` against `reference`.
+// flip.png of `test` against `reference`; the thumbnail and the viewer's linear data.
 void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
                            const ref::StoredReference& reference, const image::Image& test,
                            const metrics::MetricReport& report, results::JobOutputs& outputs) {
   const fs::path reference_png = job_dir / "reference.png";
   image::writePng(reference_png, reference.mean);
   outputs.reference_png = relativePath(run_dir, reference_png);
+  const fs::path thumbnail = job_dir / "thumbnail.png";
+  image::writePng(thumbnail, image::downsampleToWidth(test.width() > 0 ? test : reference.mean,
+                                                      kThumbnailWidth));
+  outputs.thumbnail_png = relativePath(run_dir, thumbnail);
+  outputs.reference_viewer_data = writeReferenceViewerData(run_dir, reference);
+  const image::Image* flip = nullptr;
+  for (const auto& [name, map] : report.maps)
+    if (name == "flip") flip = &map;
+  const fs::path viewer = job_dir / "viewer.js";
+  outputs.viewer_data = relativePath(run_dir, viewer);
+  image::writeViewerData(viewer, outputs.viewer_data, {{"image", &test}, {"flip", flip}});
   if (test.width() == 0) return;
   const fs::path difference_png = job_dir / "difference.png";
   image::writePng(difference_png,
                   metrics::errorMapForDisplay(
                       "difference", metrics::absoluteLuminanceDifference(reference.mean, test)));
   outputs.difference_png = relativePath(run_dir, difference_png);
-  for (const auto& [name, map] : report.maps)
-    if (name == "flip") {
-      const fs::path flip_png = job_dir / "flip.png";
-      image::writePng(flip_png, metrics::errorMapForDisplay(name, map));
-      outputs.flip_png = relativePath(run_dir, flip_png);
-    }
+  if (flip) {
+    const fs::path flip_png = job_dir / "flip.png";
+    image::writePng(flip_png, metrics::errorMapForDisplay("flip", *flip));
+    outputs.flip_png = relativePath(run_dir, flip_png);
+  }
 }
 
 void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env,

@@ -274,14 +274,19 @@ SlurmSubmission submitToSlurm(const Suite& suite, const RunOptions& options,
                           "--task-list \"$1\" --task-index \"$SLURM_ARRAY_TASK_ID\"\n",
                           gibench, shellQuoted(fs::absolute(suite.file).string()), run_dir,
                           store_dir, task_options));
-  std::string history = " --no-history";
+  std::string merge_options = " --no-history";
   if (!options.history_db.empty())
-    history = " --db " + shellQuoted(fs::absolute(options.history_db).string());
+    merge_options = " --db " + shellQuoted(fs::absolute(options.history_db).string());
+  for (const std::string& argument : slurm.merge_arguments) {
+    merge_options += ' ';  // appended apart: GCC 12's -Wrestrict misfires on " " + string
+    merge_options += shellQuoted(argument);
+  }
   const fs::path status_file = submission.dir / "merge.status";
-  writeScript(submission.dir / "merge.sh",
-              fmt::format("# The merge of a GI Bench Slurm run: results, history row, report.\n"
-                          "{} merge {} --store {}{}\nstatus=$?\necho $status > {}\nexit $status\n",
-                          gibench, run_dir, store_dir, history, shellQuoted(status_file.string())));
+  writeScript(
+      submission.dir / "merge.sh",
+      fmt::format("# The merge of a GI Bench Slurm run: results, history row, report.\n"
+                  "{} merge {} --store {}{}\nstatus=$?\necho $status > {}\nexit $status\n",
+                  gibench, run_dir, store_dir, merge_options, shellQuoted(status_file.string())));
 
   const auto now = std::chrono::system_clock::now().time_since_epoch();
   Submitter submitter(submission.dir,

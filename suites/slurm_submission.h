@@ -32,6 +32,9 @@ struct SlurmOptions {
   std::vector<std::string> sbatch_args;      // added to every sbatch call
   std::vector<std::string> gpu_sbatch_args;  // added to the technique array's ("--gres=gpu:1")
   bool resume = false;                       // submit the unfinished jobs of the run in --out
+  // Added to the merge job's `gibench merge` ("--junit", "/abs/run.xml"): options that a local
+  // run applies when it writes its report. Paths must be absolute: the job runs elsewhere.
+  std::vector<std::string> merge_arguments;
 };
 
 struct SlurmSubmission {

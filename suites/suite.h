@@ -92,6 +92,8 @@ struct Suite {
   std::vector<results::PaperValue> paper;
   // [[chart]]: figures drawn over the suite's jobs in the report.
   std::vector<results::ChartSpec> charts;
+  // [[figure]]: the document's figures as grids of the jobs' pictures, each a page of the report.
+  std::vector<results::FigureSpec> figures;
 };
 
 }  // namespace gib::suites

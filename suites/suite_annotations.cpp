@@ -10,6 +10,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -25,26 +26,27 @@ constexpr const char* kQuantityFix =
 // for jobs that have no technique (reference jobs are not timed) is an error too. The passes
 // are an interface of each technique (`gibench list techniques` lists them): a renamed pass must
 // fail here, not leave a figure without its numbers.
-void checkPassesDeclared(const TomlTableReader& t, const toml::node& node, std::string_view key,
-                         const std::string& quantity, const std::set<std::string>& techniques,
+// `what` names the quantity's key in messages ("chart.y").
+void checkPassesDeclared(const TomlErrorReporter& errors, const toml::node& node,
+                         std::string_view what, const std::string& quantity,
+                         const std::set<std::string>& techniques,
                          std::string_view jobs_description) {
   for (const std::string& pass : results::quantityPasses(quantity)) {
     if (techniques.empty())
-      t.errors().fail(node,
-                      fmt::format("{} '{}' names the pass '{}', but {} no technique: reference "
-                                  "jobs are not timed",
-                                  t.path(key), quantity, pass, jobs_description),
-                      "name a metric value, or give jobs of a real-time technique");
+      errors.fail(node,
+                  fmt::format("{} '{}' names the pass '{}', but {} no technique: reference "
+                              "jobs are not timed",
+                              what, quantity, pass, jobs_description),
+                  "name a metric value, or give jobs of a real-time technique");
     for (const std::string& technique : techniques) {
       const rt::TechniqueInfo& info = rt::findTechnique(technique);
       if (info.passes.declares(pass)) continue;
-      t.errors().fail(
-          node,
-          fmt::format("{} '{}' names the pass '{}', which technique '{}' does not declare",
-                      t.path(key), quantity, pass, technique),
-          fmt::format("name one of its passes: {} (`gibench list techniques`)",
-                      joinNames(info.passes.passes(), ", ",
-                                [](const rt::DeclaredPass& p) { return p.path; })));
+      errors.fail(node,
+                  fmt::format("{} '{}' names the pass '{}', which technique '{}' does not declare",
+                              what, quantity, pass, technique),
+                  fmt::format("name one of its passes: {} (`gibench list techniques`)",
+                              joinNames(info.passes.passes(), ", ",
+                                        [](const rt::DeclaredPass& p) { return p.path; })));
     }
   }
 }
@@ -102,6 +104,23 @@ results::TimingTolerance readTimingTolerance(const TomlTableReader& parent,
   return tolerance;
 }
 
+// A paper value's relative tolerance: a finite number, not negative. The message names the entry
+// by its job and quantity too: a figure suite has dozens of [[paper]] entries.
+double readPaperTolerance(const TomlTableReader& t, const toml::node& node,
+                          const results::PaperValue& v) {
+  const double tolerance = tomlNumber(node);  // NaN for a string, an array, …
+  if (!(std::isfinite(tolerance) && tolerance >= 0))
+    t.errors().fail(
+        node,
+        fmt::format("{} (job '{}', quantity '{}') has tolerance = {}, but a tolerance must be a "
+                    "finite number ≥ 0",
+                    t.header(), v.job, v.quantity,
+                    node.is_number() ? fmt::format("{}", tolerance) : "a non-number"),
+        "write the allowed relative difference from the paper's value, e.g. tolerance = 0.05 "
+        "for ±5%, or leave it out to show the value without a verdict");
+  return tolerance;
+}
+
 }  // namespace
 
 results::Tolerances readTolerances(const TomlTableReader& root, const toml::node& node) {
@@ -138,7 +157,7 @@ std::vector<results::PaperValue> readPaperValues(const TomlTableReader& root,
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const TomlTableReader t(root.errors(), *entries[i], "paper",
                             fmt::format("[[paper]] entry {}", i + 1),
-                            {"job", "quantity", "value", "unit", "source", "note"});
+                            {"job", "quantity", "value", "unit", "source", "note", "tolerance"});
     results::PaperValue v;
     const toml::node& job = t.require("job", "\"cornell-direct/shadow=pcf\"");
     v.job = t.string(job, "job");
@@ -152,12 +171,13 @@ std::vector<results::PaperValue> readPaperValues(const TomlTableReader& root,
     if (const std::optional<std::string> error = results::quantitySyntaxError(v.quantity))
       t.errors().fail(quantity, fmt::format("{} '{}' {}", t.path("quantity"), v.quantity, *error),
                       kQuantityFix);
-    checkPassesDeclared(t, quantity, "quantity", v.quantity, techniquesOf({&*found}),
-                        fmt::format("job '{}' has", v.job));
+    checkPassesDeclared(t.errors(), quantity, t.path("quantity"), v.quantity,
+                        techniquesOf({&*found}), fmt::format("job '{}' has", v.job));
     v.value = t.number(t.require("value", "12.5"), "value");
     v.source = t.string(t.require("source", "\"Nijasure et al. 2005, Table 1\""), "source");
     if (const toml::node* n = t.find("unit")) v.unit = t.string(*n, "unit");
     if (const toml::node* n = t.find("note")) v.note = t.string(*n, "note");
+    if (const toml::node* n = t.find("tolerance")) v.tolerance = readPaperTolerance(t, *n, v);
     values.push_back(std::move(v));
   }
   return values;
@@ -189,7 +209,7 @@ std::vector<results::ChartSpec> readCharts(const TomlTableReader& root,
       std::string value = t.string(node, key);
       if (const std::optional<std::string> error = results::quantitySyntaxError(value))
         t.errors().fail(node, fmt::format("{} '{}' {}", t.path(key), value, *error), kQuantityFix);
-      checkPassesDeclared(t, node, key, value, techniques,
+      checkPassesDeclared(t.errors(), node, t.path(key), value, techniques,
                           fmt::format("the jobs '{}' have", c.jobs));
       return value;
     };
@@ -202,6 +222,14 @@ std::vector<results::ChartSpec> readCharts(const TomlTableReader& root,
     charts.push_back(std::move(c));
   }
   return charts;
+}
+
+void checkQuantity(const TomlErrorReporter& errors, const toml::node& node, std::string_view what,
+                   const std::string& quantity, const Job& job) {
+  if (const std::optional<std::string> error = results::quantitySyntaxError(quantity))
+    errors.fail(node, fmt::format("{} '{}' {}", what, quantity, *error), kQuantityFix);
+  checkPassesDeclared(errors, node, what, quantity, techniquesOf({&job}),
+                      fmt::format("job '{}' has", job.id));
 }
 
 }  // namespace gib::suites

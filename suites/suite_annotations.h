@@ -14,6 +14,9 @@
 //   unit = "ms"                         # optional
 //   source = "Nijasure et al. 2005, Table 1"
 //   note = "Radeon 9800 Pro"            # optional
+//   tolerance = 0.05                    # optional, relative: ours reproduces the value when
+//                                       # |ours − value| ≤ 0.05·|value|; finite, ≥ 0. Left out
+//                                       # for numbers only shown (times from other hardware)
 #pragma once
 
 #include "common/toml_reader.h"
@@ -45,5 +48,11 @@ std::vector<results::ChartSpec> readCharts(const TomlTableReader& root,
 // by the job's technique.
 std::vector<results::PaperValue> readPaperValues(const TomlTableReader& root,
                                                  const std::vector<Job>& jobs);
+
+// Checks a quantity of `job` (results/quantity.h): its syntax, and that every pass it names is
+// declared by the job's technique. `what` names it in the message ("figure 'fig6', panel 2's
+// metric").
+void checkQuantity(const TomlErrorReporter& errors, const toml::node& node, std::string_view what,
+                   const std::string& quantity, const Job& job);
 
 }  // namespace gib::suites

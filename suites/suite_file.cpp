@@ -2,6 +2,7 @@
 
 #include "suites/job_expansion.h"
 #include "suites/suite_annotations.h"
+#include "suites/suite_figures.h"
 
 #include "common/input_error.h"
 #include "common/join.h"
@@ -409,7 +410,7 @@ Suite loadSuiteFile(const std::filesystem::path& path) {
   const toml::table document = parseTomlFile(errors, path, "suite file");
   const TomlTableReader root(
       errors, document, "", "the top level of the suite file",
-      {"name", "description", "defaults", "case", "tolerances", "paper", "chart"});
+      {"name", "description", "defaults", "case", "tolerances", "paper", "chart", "figure"});
 
   Suite suite;
   suite.file = fs::absolute(path).lexically_normal();
@@ -453,6 +454,7 @@ Suite loadSuiteFile(const std::filesystem::path& path) {
   const std::vector<Job> jobs = expandSuite(suite);
   suite.paper = readPaperValues(root, jobs);
   suite.charts = readCharts(root, jobs);
+  suite.figures = readFigures(root, jobs);
   return suite;
 }
 

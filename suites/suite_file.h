@@ -40,7 +40,8 @@
 // exist here (it is loaded, with its own errors, when the suite runs). A reference case takes no
 // `set`, frames, warmup and repeats do not apply to it, and its checkpoints (spp counts) are at
 // most its reference spp. A case expanding into more than 10 000 jobs is refused as a likely
-// mistake.
+// mistake. [tolerances], [[paper]] and [[chart]] are described in suites/suite_annotations.h,
+// [[figure]] in suites/suite_figures.h.
 #pragma once
 
 #include "suites/suite.h"

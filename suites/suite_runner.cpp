@@ -410,6 +410,7 @@ RunOutcome assembleRun(const Suite& suite, const RunOptions& options, const RunD
   for (const results::PaperValue& value : suite.paper)
     if (run.findJob(value.job)) run.paper.push_back(value);
   run.charts = suite.charts;
+  run.figures = suite.figures;
   run.primary_metric = primaryMetric(run.jobs);
   outcome.failed = std::size_t(
       std::count_if(run.jobs.begin(), run.jobs.end(), [](const auto& j) { return j.failed(); }));
@@ -542,6 +543,15 @@ RunOutcome mergeRuns(const std::vector<fs::path>& dirs, const RunOptions& option
       const fs::path target = dir.prepareJob(jobs[i]);
       fs::copy(theirs.jobDirectory(jobs[i]), target, fs::copy_options::recursive);
       result = dir.finishedJob(jobs[i], prepared[i].hash);
+      // The reference's viewer data lives outside the job's folder (one file per reference).
+      if (result && !result->outputs.reference_viewer_data.empty()) {
+        const fs::path shared = result->outputs.reference_viewer_data;
+        std::error_code ec;
+        if (!fs::exists(out / shared, ec) && fs::is_regular_file(theirs.path() / shared, ec)) {
+          fs::create_directories((out / shared).parent_path());
+          fs::copy_file(theirs.path() / shared, out / shared);
+        }
+      }
     }
     if (!result) {
       result = describeJob(prepared[i]);

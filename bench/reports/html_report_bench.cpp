@@ -1,7 +1,10 @@
 // The HTML report of a nightly-sized run (50 technique jobs with nested pass timings and
-// convergence, coloured against a previous run, trends over 20 runs), and each SVG chart alone.
+// convergence, coloured against a previous run, trends over 20 runs), and each SVG chart alone;
+// and how long the index of a 100-job run (128² pictures, thumbnails, viewer data) takes to load
+// in headless Chromium, measured by the page itself (navigation to load event).
 #include "reports/html_report.h"
 #include "reports/svg_charts.h"
+#include "support/headless_browser.h"
 #include "support/synthetic_report_run.h"
 #include "support/temporary_directory.h"
 
@@ -10,6 +13,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
 
 namespace {
 
@@ -51,6 +58,77 @@ void BM_WriteHtmlReport50Jobs(benchmark::State& state) {
   state.SetItemsProcessed(std::int64_t(state.iterations()) * (kJobs + 1));
 }
 BENCHMARK(BM_WriteHtmlReport50Jobs)->Unit(benchmark::kMillisecond);
+
+// 100 jobs at the nightly suite's 128², regressed against a previous run so the regressed-first
+// view is on the page too.
+struct LoadFixture {
+  static constexpr int kLoadJobs = 100;
+  const bench::TemporaryDirectory temporary{"gib-report-load-bench"};
+  const fs::path& dir = temporary.path();
+  fs::path index;
+  LoadFixture() {
+    results::RunResults results = test::syntheticReportResults("20261122-100405-nightly-1a2b3c4d");
+    results::RunResults previous = results;
+    results.jobs.resize(1);  // the reference
+    for (int i = 0; i < kLoadJobs - 1; ++i) {
+      results::JobResult job =
+          test::syntheticTechniqueJob("light_samples=" + std::to_string(i + 1), 0.002 / (i + 1));
+      job.width = job.height = 128;
+      results.jobs.push_back(job);
+    }
+    results.jobs[0].width = results.jobs[0].height = 128;
+    test::writeSyntheticOutputs(dir, results);
+    previous = results;
+    previous.run.id = "20261121-100405-nightly-00000000";
+    previous.run.started = "2026-11-21T10:04:05Z";
+    for (int i = 1; i < kLoadJobs; i += 10) previous.jobs[i].metrics[0].second *= 0.5;
+    reports::ReportContext context;
+    context.previous = previous;
+    index = writeHtmlReport(dir, results, context);
+  }
+};
+
+// The bytes a browser reads to show a page: the page and every file its src attributes name.
+std::uintmax_t pageWeight(const fs::path& page) {
+  std::ifstream in(page);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string html = text.str();
+  std::uintmax_t bytes = fs::file_size(page);
+  const std::regex source(R"re(src="([^"]+)")re");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), source);
+       it != std::sregex_iterator(); ++it) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(page.parent_path() / (*it)[1].str(), ec);
+    if (!ec) bytes += size;
+  }
+  return bytes;
+}
+
+// Wall time per iteration is the browser's whole start; the counter load_ms is what a reader
+// waits for: the page's own navigation-to-load time.
+void BM_IndexOf100JobsLoadsInChromium(benchmark::State& state) {
+  const std::optional<fs::path> chromium = test::findChromium();
+  if (!chromium) {
+    state.SkipWithError("no chromium (scripts/install-deps.sh installs it)");
+    return;
+  }
+  static LoadFixture fixture;
+  double load_ms = 0;
+  for (auto _ : state) {
+    const test::LoadedPage page =
+        test::loadPage(*chromium, fixture.index, fixture.dir, test::PageClock::kReal);
+    const std::string value = test::rootAttribute(page.dom, "data-load-ms");
+    if (page.exit_code != 0 || value.empty() || test::reportCheck(page.dom) != "ok") {
+      state.SkipWithError(("the index did not load: " + test::reportCheck(page.dom)).c_str());
+      return;
+    }
+    load_ms += std::stod(value);
+  }
+  state.counters["load_ms"] = load_ms / double(state.iterations());
+  state.counters["page_bytes"] = double(pageWeight(fixture.index));
+}
+BENCHMARK(BM_IndexOf100JobsLoadsInChromium)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 void BM_PassTimingChart(benchmark::State& state) {
   const std::vector<reports::PassBar> passes = {{"frame", 0, 20, 19, 21},

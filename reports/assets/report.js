@@ -1,37 +1,20 @@
-// The report's script, inlined into every page: the image viewer and the self-check that marks
-// a page whose pictures or charts did not render. Plain ES5 so any browser of the last decade
-// runs it.
+// The report's self-check, inlined into every page after the image viewer (viewer.js): it marks a
+// page whose pictures, image viewers or charts did not render. Plain ES5 so any browser of the
+// last decade runs it.
 (function () {
   function each(list, f) { Array.prototype.forEach.call(list, f); }
-  each(document.querySelectorAll('.viewer'), function (viewer) {
-    var chosen = viewer.getAttribute('data-show');
-    var partner = { image: 'reference', reference: 'image' };
-    function layer(name) { return viewer.querySelector('.layer[data-layer="' + name + '"]'); }
-    function show(name) {
-      each(viewer.querySelectorAll('.layer'), function (l) { l.hidden = l.getAttribute('data-layer') !== name; });
-      each(viewer.querySelectorAll('button[data-layer]'), function (b) {
-        b.setAttribute('aria-pressed', String(b.getAttribute('data-layer') === chosen));
-      });
-      var caption = viewer.querySelector('.viewer-caption');
-      if (caption && layer(name)) caption.textContent = layer(name).alt + (name === chosen ? '' : ' (while the pointer is on the image)');
-    }
-    each(viewer.querySelectorAll('button[data-layer]'), function (b) {
-      b.addEventListener('click', function () { chosen = b.getAttribute('data-layer'); show(chosen); });
-    });
-    var stage = viewer.querySelector('.viewer-stage');
-    stage.addEventListener('mouseenter', function () { if (layer(partner[chosen])) show(partner[chosen]); });
-    stage.addEventListener('mouseleave', function () { show(chosen); });
-    show(chosen);
-  });
   window.addEventListener('load', function () {
     var problems = [];
     each(document.images, function (img) {
       if (!img.complete || img.naturalWidth === 0) problems.push('image ' + img.getAttribute('src'));
     });
     each(document.querySelectorAll('.viewer'), function (viewer, i) {
-      var shown = 0;
-      each(viewer.querySelectorAll('.layer'), function (l) { if (l.offsetParent !== null) shown += 1; });
-      if (shown !== 1) problems.push('image viewer ' + (i + 1) + ' shows ' + shown + ' pictures instead of one');
+      if (viewer.getAttribute('data-viewer-state') !== 'ready') problems.push('image viewer ' + (i + 1));
+      ['data-reference-data', 'data-job-data'].forEach(function (attribute) {
+        var expected = viewer.getAttribute(attribute);
+        if (expected && !(window.gibViewerData && window.gibViewerData[expected]))
+          problems.push('viewer data ' + expected);
+      });
     });
     each(document.querySelectorAll('svg.chart'), function (svg) {
       var box = svg.getBBox(), rect = svg.getBoundingClientRect();
@@ -39,6 +22,9 @@
         problems.push('chart "' + svg.getAttribute('aria-label') + '"');
     });
     var root = document.documentElement;
+    // How long the page took from navigation to its load event, for scripts/report-load-time.py
+    // and the report benchmark (in real time; a test's virtual time budget makes it virtual).
+    root.setAttribute('data-load-ms', String(Math.round(performance.now())));
     if (problems.length === 0) { root.setAttribute('data-report-check', 'ok'); return; }
     root.setAttribute('data-report-check', 'failed: ' + problems.join('; '));
     var banner = document.getElementById('report-check');

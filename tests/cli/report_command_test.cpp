@@ -2,6 +2,7 @@
 // database, and bad input.
 #include "results/history_db.h"
 #include "results/results_json.h"
+#include "support/read_text.h"
 #include "support/run_command.h"
 #include "support/synthetic_report_run.h"
 #include "support/temp_dir.h"
@@ -15,13 +16,6 @@ namespace gib::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 class ReportCommand : public ::testing::Test {
  protected:

@@ -3,6 +3,7 @@
 #include "support/run_command.h"
 #include "results/results.h"
 #include "results/results_json.h"
+#include "support/read_text.h"
 #include "support/temp_dir.h"
 #include "support/tiny_suite.h"
 
@@ -27,16 +28,12 @@ namespace gib {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readText;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
 void writeFile(const fs::path& path, const std::string& text) {
   std::ofstream(path) << text;
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 class RunCommandTest : public ::testing::Test {
@@ -109,7 +106,13 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
   EXPECT_EQ(results.jobs[1].id, "cornell-direct/shadow=hard");
   EXPECT_EQ(results.jobs[2].id, "cornell-direct/shadow=pcf");
   EXPECT_TRUE(fs::is_regular_file(out / "index.html"));
-  EXPECT_EQ(test::countLines(readFile(out / "results.csv")), 4);  // header + 3 jobs
+  // The suite's [[figure]]: recorded, with its page and its panels in one picture (three 32×32
+  // images in a row).
+  ASSERT_EQ(results.figures.size(), 1u);
+  EXPECT_EQ(results.figures[0].panels.size(), 3u);
+  EXPECT_TRUE(fs::is_regular_file(out / "report" / "figure-shadows.html"));
+  EXPECT_TRUE(fs::is_regular_file(out / "figures" / "shadows.png"));
+  EXPECT_EQ(test::countLines(readText(out / "results.csv")), 4);  // header + 3 jobs
   EXPECT_TRUE(fs::is_regular_file(store() / "history.sqlite"));
   EXPECT_THAT(r.out, HasSubstr("report     "));
   EXPECT_THAT(r.err, HasSubstr("[3/3] cornell-direct/shadow=pcf: done"));
@@ -166,7 +169,7 @@ TEST_F(RunCommandTest, AnInterruptedRunIsResumed) {
   kill(pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
-  ASSERT_TRUE(fs::exists(first_result)) << readFile(log);
+  ASSERT_TRUE(fs::exists(first_result)) << readText(log);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be interrupted";
   EXPECT_FALSE(fs::exists(out / "results.json"));
   const results::JobResult recorded = results::readJobFile(first_result);

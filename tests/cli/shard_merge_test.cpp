@@ -63,6 +63,10 @@ TEST_F(ShardMergeTest, ShardsInOneDirectoryMergeIntoTheLocalRunsResults) {
   const results::RunResults b = results::readResultsFile(out / "results.json");
   test::expectSameDeterministicResults(a, b);
   for (const results::JobResult& job : b.jobs) EXPECT_FALSE(job.execution.host.empty());
+  // The suite's figure survives the merge, with its page and picture.
+  ASSERT_EQ(b.figures.size(), 1u);
+  EXPECT_TRUE(fs::is_regular_file(out / "report" / "figure-shadows.html"));
+  EXPECT_TRUE(fs::is_regular_file(out / "figures" / "shadows.png"));
 }
 
 TEST_F(ShardMergeTest, ShardsInTheirOwnDirectoriesAreGatheredByTheMerge) {
@@ -82,6 +86,9 @@ TEST_F(ShardMergeTest, ShardsInTheirOwnDirectoriesAreGatheredByTheMerge) {
   for (const results::JobResult& job : results.jobs) {
     EXPECT_FALSE(job.failed()) << job.id << ": " << job.failure;
     EXPECT_TRUE(fs::is_regular_file(out / job.outputs.reference_png)) << job.id;
+    // The report viewer's data, the reference's shared file included, came along.
+    EXPECT_TRUE(fs::is_regular_file(out / job.outputs.viewer_data)) << job.id;
+    EXPECT_TRUE(fs::is_regular_file(out / job.outputs.reference_viewer_data)) << job.id;
   }
 }
 

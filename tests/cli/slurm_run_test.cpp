@@ -6,6 +6,7 @@
 #include "results/results.h"
 #include "results/results_json.h"
 #include "support/headless_browser.h"
+#include "support/read_text.h"
 #include "support/run_command.h"
 #include "support/run_equivalence.h"
 #include "support/shrunk_smoke_suite.h"
@@ -28,13 +29,9 @@ namespace gib {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readText;
 using ::testing::HasSubstr;
 using ::testing::Not;
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // The cluster of scripts/slurm-local.sh, state under `dir`, stopped when this goes away.
 class LocalSlurm {
@@ -211,9 +208,13 @@ TEST_F(SlurmRun, ArraysMergeLikeALocalRunSurviveCancelAndFailureAndShareTheStore
   const results::RunResults expected = results::readResultsFile(dir_ / "local" / "results.json");
 
   {
-    SCOPED_TRACE("a cancelled task: its job shows as failed; --resume runs it alone");
+    SCOPED_TRACE(
+        "a cancelled task: its job shows as failed, also in the merge's --junit; --resume runs "
+        "it alone");
     const fs::path out = dir_ / "cancelled";
-    const test::CommandResult r = submit(suite(), out, dir_ / "store");
+    const test::CommandResult r = submit(suite(), out, dir_ / "store",
+                                         {"--junit", (dir_ / "cancelled.xml").string(), "--summary",
+                                          (dir_ / "cancelled.md").string()});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string gpu = slurmJobId(out, "gpu_array");
     ASSERT_FALSE(gpu.empty());
@@ -223,6 +224,10 @@ TEST_F(SlurmRun, ArraysMergeLikeALocalRunSurviveCancelAndFailureAndShareTheStore
     ASSERT_EQ(partial.jobs.size(), 3u);
     EXPECT_THAT(partial.jobs[2].failure, HasSubstr("no result"));
     EXPECT_FALSE(partial.jobs[1].failed());
+    const std::string junit = readText(dir_ / "cancelled.xml");
+    EXPECT_THAT(junit, HasSubstr("errors=\"1\""));
+    EXPECT_THAT(junit, HasSubstr("<error message=\"no result"));
+    EXPECT_THAT(readText(dir_ / "cancelled.md"), HasSubstr("1 failed"));
 
     const test::CommandResult resumed =
         submit(suite(), out, dir_ / "store", {"--resume", "--wait"});

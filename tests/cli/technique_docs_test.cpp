@@ -3,6 +3,7 @@
 // `--set` accepts and what the profiler times. When this fails, run
 // scripts/update-technique-docs.py.
 #include "realtime/technique.h"
+#include "support/read_text.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
 
@@ -17,13 +18,7 @@ namespace gib::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::readText;
 
 // The text between the README's BEGIN and END generated markers ("" when they are missing).
 std::string generatedSection(const std::string& readme, const std::string& name) {
@@ -48,7 +43,7 @@ TEST(TechniqueDocs, EveryReadmeShowsTheCataloguesCurrentParametersAndPasses) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("| `" + info.parameters.front().name + "` |"), std::string::npos);
     EXPECT_NE(r.out.find("| `frame` |"), std::string::npos);
-    EXPECT_EQ(generatedSection(readFile(readme), info.name), r.out)
+    EXPECT_EQ(generatedSection(readText(readme), info.name), r.out)
         << readme << " is out of date: run scripts/update-technique-docs.py";
   }
 }

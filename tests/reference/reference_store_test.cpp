@@ -5,6 +5,7 @@
 #include "common/input_error.h"
 #include "reference/reference_store_entry.h"
 #include "scene/builtin_scenes.h"
+#include "support/read_text.h"
 #include "support/reference_store_fixtures.h"
 #include "support/temp_dir.h"
 
@@ -23,18 +24,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::obtainReference;
+using test::readText;
 using test::smallReferenceSpec;
 using test::TempDir;
 using ::testing::HasSubstr;
 
 bool bitIdentical(const image::Image& a, const image::Image& b) {
   return a.sameSize(b) && std::memcmp(a.data().data(), b.data().data(), a.data().size_bytes()) == 0;
-}
-
-std::string readText(const fs::path& path) {
-  std::stringstream s;
-  s << std::ifstream(path).rdbuf();
-  return s.str();
 }
 
 // The names in <root>/references.

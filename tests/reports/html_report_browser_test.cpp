@@ -4,6 +4,7 @@
 #include "reports/html_report.h"
 
 #include "image/output_files.h"
+#include "reports/figure_panels.h"
 #include "support/headless_browser.h"
 #include "support/synthetic_report_run.h"
 #include "support/temp_dir.h"
@@ -42,6 +43,10 @@ TEST_F(HtmlReportBrowser, EveryPageLoadsWithoutConsoleErrorsAndPassesItsSelfChec
   std::vector<fs::path> pages = {index_};
   for (const results::JobResult& job : results_.jobs)
     pages.push_back(run_dir_ / "report" / (job.slug + ".html"));
+  // The figure pages too: the synthetic run has a figure (with a panel whose picture is absent).
+  ASSERT_FALSE(results_.figures.empty());
+  for (const results::FigureSpec& figure : results_.figures)
+    pages.push_back(run_dir_ / figurePageFile(figure));
   for (const fs::path& page : pages) {
     SCOPED_TRACE(page.string());
     const test::LoadedPage loaded = test::loadPage(*chromium, page, dir_.path());

@@ -1,7 +1,9 @@
 #include "reports/html_report.h"
 
 #include "common/input_error.h"
+#include "reports/figure_panels.h"
 #include "support/markup_check.h"
+#include "support/read_text.h"
 #include "support/synthetic_report_run.h"
 #include "support/temp_dir.h"
 
@@ -16,13 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::countOccurrences;
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::readText;
 
 // Every value of `attribute` ("href", "src") in the page.
 std::vector<std::string> attributeValues(const std::string& html, const std::string& attribute) {
@@ -63,6 +59,9 @@ TEST_F(HtmlReport, WritesAWellFormedIndexAndOnePagePerJobWhoseLinksResolve) {
   std::vector<fs::path> pages = {index};
   for (const results::JobResult& job : results_.jobs)
     pages.push_back(dir_ / "report" / (job.slug + ".html"));
+  ASSERT_FALSE(results_.figures.empty());
+  for (const results::FigureSpec& figure : results_.figures)
+    pages.push_back(dir_ / figurePageFile(figure));
   for (const fs::path& page : pages) {
     ASSERT_TRUE(fs::is_regular_file(page)) << page;
     const std::string html = readText(page);
@@ -83,7 +82,7 @@ TEST_F(HtmlReport, WritesAWellFormedIndexAndOnePagePerJobWhoseLinksResolve) {
     EXPECT_EQ(entry.path().extension(), ".html") << entry.path();
     ++report_files;
   }
-  EXPECT_EQ(report_files, results_.jobs.size());
+  EXPECT_EQ(report_files, results_.jobs.size() + results_.figures.size());
 }
 
 TEST_F(HtmlReport, IndexShowsTheRunAndAMatrixOfScenesByTechniquesWithTheReferenceFirst) {

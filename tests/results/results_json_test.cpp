@@ -3,6 +3,7 @@
 #include "results/results_json.h"
 
 #include "common/input_error.h"
+#include "support/read_text.h"
 #include "support/synthetic_results.h"
 #include "support/synthetic_timings.h"
 #include "support/temp_dir.h"
@@ -18,13 +19,9 @@ namespace gib::results {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readText;
 using json = nlohmann::ordered_json;
 using ::testing::HasSubstr;
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void writeText(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
@@ -54,12 +51,13 @@ TEST(ResultsJson, RoundTripsEveryFieldThroughAFile) {
 }
 
 TEST(ResultsJson, FilesFromBeforeTheFigureFieldsStillRead) {
-  // charts, iteration_timings, statistics, auxiliary_images, scene_file, repeats and conditions
-  // came after version 1: a file without them reads with their defaults (docs/results-schema.md,
-  // compatibility).
+  // charts, figures, iteration_timings, statistics, auxiliary_images, scene_file, repeats and
+  // conditions came after version 1: a file without them reads with their defaults
+  // (docs/results-schema.md, compatibility).
   RunResults results = test::richResults();
   nlohmann::ordered_json document = resultsToJson(results);
   document.erase("charts");
+  document.erase("figures");
   document["run"].erase("conditions");
   for (auto& job : document["jobs"]) {
     for (const char* key : {"iteration_timings", "statistics", "auxiliary_images", "scene_file",
@@ -68,6 +66,7 @@ TEST(ResultsJson, FilesFromBeforeTheFigureFieldsStillRead) {
   }
   const RunResults back = resultsFromJson(document, "memory");
   EXPECT_TRUE(back.charts.empty());
+  EXPECT_TRUE(back.figures.empty());
   EXPECT_EQ(back.run.conditions, RunConditions{});
   EXPECT_FALSE(back.jobs[0].iteration_timings.has_value());
   EXPECT_TRUE(back.jobs[0].statistics.empty());
@@ -76,6 +75,38 @@ TEST(ResultsJson, FilesFromBeforeTheFigureFieldsStillRead) {
   EXPECT_TRUE(back.jobs[0].repeats.empty());
   EXPECT_EQ(back.jobs[0].conditions, RunConditions{});
   EXPECT_EQ(back.jobs[0].metrics, results.jobs[0].metrics);
+}
+
+TEST(ResultsJson, FiguresKeepTheirPanelsAndCellsAndRefuseCellsOutsideTheGrid) {
+  const RunResults results = test::richResults();
+  ASSERT_EQ(results.figures.size(), 1u);
+  const json document = resultsToJson(results);
+  // As docs/results-schema.md documents them.
+  const json& figure = document.at("figures").at(0);
+  EXPECT_EQ(figure.at("name"), "fig-6");
+  EXPECT_EQ(figure.at("columns"), 3);
+  const json& panel = figure.at("panels").at(0);
+  EXPECT_EQ(panel.at("job"), "cornell-direct/shadow=pcf");
+  EXPECT_EQ(panel.at("image"), "aux:atlas");
+  EXPECT_EQ(panel.at("caption"), "atlas");
+  EXPECT_EQ(panel.at("row"), 1);
+  EXPECT_EQ(panel.at("column"), 3);
+  EXPECT_EQ(panel.at("metric"), "full:relmse");
+  EXPECT_EQ(resultsFromJson(document, "memory").figures, results.figures);
+
+  // A hand-edited cell outside the figure is named, not laid out.
+  json outside = document;
+  outside["figures"][0]["panels"][1]["column"] = 4;
+  EXPECT_THAT(inputErrorOf([&] { resultsFromJson(outside, "memory"); }),
+              HasSubstr("figures[0].panels[1].column: must be in [1, 3]"));
+  json no_row = document;
+  no_row["figures"][0]["panels"][0]["row"] = 0;
+  EXPECT_THAT(inputErrorOf([&] { resultsFromJson(no_row, "memory"); }),
+              HasSubstr("figures[0].panels[0].row: must be 1 or more"));
+  json missing = document;
+  missing["figures"][0].erase("panels");
+  EXPECT_THAT(inputErrorOf([&] { resultsFromJson(missing, "memory"); }),
+              HasSubstr("figures[0].panels"));
 }
 
 // The per-pass timings as results.json and timings.json hold them (docs/results-schema.md).
@@ -253,6 +284,24 @@ TEST(ResultsJson, JobFilesRoundTripAndAreNotResultsFiles) {
   writeResultsFile(dir / "results.json", results);
   EXPECT_THAT(inputErrorOf([&] { readJobFile(dir / "results.json"); }),
               HasSubstr("'gibench-results' is not 'gibench-job'"));
+}
+
+// A paper value's tolerance is optional: absent from the file when not set (a value shown, not
+// judged), and a hand-edited negative one is refused like any bad field.
+TEST(ResultsJson, PaperTolerancesAreWrittenWhenSetAndRoundTrip) {
+  RunResults results = test::richResults();
+  results::PaperValue judged = results.paper.at(0);
+  judged.quantity = "relmse";
+  judged.value = 0.02;
+  judged.tolerance = 0.05;
+  results.paper.push_back(judged);
+  json document = resultsToJson(results);
+  EXPECT_FALSE(document.at("paper").at(0).contains("tolerance"));
+  EXPECT_EQ(document.at("paper").at(1).at("tolerance"), 0.05);
+  EXPECT_EQ(resultsFromJson(document, "memory").paper, results.paper);
+  document["paper"][1]["tolerance"] = -0.05;
+  EXPECT_THAT(inputErrorOf([&] { resultsFromJson(document, "r.json"); }),
+              HasSubstr("paper[1].tolerance: must be a finite number ≥ 0"));
 }
 
 }  // namespace

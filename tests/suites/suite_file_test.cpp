@@ -526,6 +526,29 @@ source = "A paper"
   EXPECT_THAT(errorOf(no_value), HasSubstr("value"));
 }
 
+// A tolerance marks a paper value we should reproduce; it is relative, so it cannot be negative,
+// and a non-finite one would judge nothing.
+TEST_F(SuiteFileTest, PaperValuesMayCarryARelativeTolerance) {
+  auto paper = [](const std::string& tolerance_line) {
+    return std::string(kSuite) + "\n[[paper]]\njob = \"direct-sweep/shadow=pcf\"\nquantity = " +
+           "\"relmse\"\nvalue = 0.02\nsource = \"A paper\"\n" + tolerance_line;
+  };
+  const Suite with = load(paper("tolerance = 0.05\n"));
+  ASSERT_EQ(with.paper.size(), 1u);
+  EXPECT_EQ(with.paper[0].tolerance, std::optional<double>(0.05));
+  EXPECT_EQ(load(paper("tolerance = 0\n")).paper[0].tolerance, std::optional<double>(0.0));
+  EXPECT_EQ(load(paper("")).paper[0].tolerance, std::nullopt);  // shown, not judged
+  for (const char* bad :
+       {"tolerance = -0.05", "tolerance = inf", "tolerance = nan", "tolerance = \"5%\""}) {
+    const std::string message = expectErrorAt(paper(std::string(bad) + "\n"), bad);
+    EXPECT_THAT(message, HasSubstr("[[paper]] entry 1 (job 'direct-sweep/shadow=pcf', quantity "
+                                   "'relmse') has tolerance = "))
+        << bad;
+    EXPECT_THAT(message, HasSubstr("finite number ≥ 0")) << bad;
+    EXPECT_THAT(message, HasSubstr("tolerance = 0.05 for ±5%")) << bad;
+  }
+}
+
 // Pass names are each technique's declared interface: a figure that names a pass the technique
 // does not declare (a renamed pass, a typo) is refused where it is written, not left without its
 // numbers in the report.
@@ -625,6 +648,164 @@ iterations = 50
   EXPECT_EQ(suite.cases[1].settings.iterationCount(), 1);        // neither given
 }
 
+// kSuite's jobs with a case that measures no FLIP, for figures.
+const std::string kFigureSuite = std::string(kSuite) + R"(
+[[case]]
+name = "no-flip"
+scene = "cornell"
+technique = "direct"
+metrics = ["relmse"]
+)";
+
+// A figure "f" with `columns` (when not empty) and the given panels (TOML of [[figure.panel]]
+// tables).
+std::string figure(const std::string& panels, const std::string& columns = "") {
+  return kFigureSuite + "\n[[figure]]\nname = \"f\"\ntitle = \"Fig. 1\"\n" +
+         (columns.empty() ? "" : "columns = " + columns + "\n") + panels;
+}
+
+std::string panel(const std::string& job, const std::string& image, const std::string& more = "") {
+  return "[[figure.panel]]\njob = \"" + job + "\"\nimage = \"" + image + "\"\n" + more;
+}
+
+TEST_F(SuiteFileTest, FiguresPlaceTheirPanelsInTheDeclaredGrid) {
+  const Suite suite = load(kFigureSuite + R"(
+[[figure]]
+name = "fig2"
+title = "Fig. 2: shadows"
+caption = "Hard and PCF shadows beside the reference."
+columns = 3
+
+[[figure.panel]]
+job = "direct-sweep/shadow=pcf"
+image = "image"
+caption = "PCF"
+row = 2
+column = 3
+metric = "frame"
+
+[[figure.panel]]   # a row only: the first free column of row 1
+job = "direct-sweep/shadow=hard"
+image = "difference"
+row = 1
+
+[[figure.panel]]   # a column only: the first free row of column 3
+job = "cornell-reference"
+image = "reference"
+column = 3
+
+[[figure.panel]]   # neither: the first free cell, row by row
+job = "direct-sweep/shadow=hard"
+image = "aux:atlas"
+metric = "none"
+
+[[figure.panel]]
+job = "direct-sweep/shadow=pcf"
+image = "flip"
+metric = "full:relmse"
+
+[[figure]]
+name = "second"
+title = "Second"
+
+[[figure.panel]]
+job = "cornell-reference"
+image = "image"
+
+[[figure.panel]]
+job = "cornell-reference"
+image = "difference"
+)");
+  using Panel = results::FigureSpec::Panel;
+  ASSERT_EQ(suite.figures.size(), 2u);
+  const results::FigureSpec& fig2 = suite.figures[0];
+  EXPECT_EQ(fig2.name, "fig2");
+  EXPECT_EQ(fig2.title, "Fig. 2: shadows");
+  EXPECT_EQ(fig2.caption, "Hard and PCF shadows beside the reference.");
+  EXPECT_EQ(fig2.columns, 3);
+  EXPECT_THAT(fig2.panels,
+              ElementsAre(Panel{"direct-sweep/shadow=pcf", "image", "PCF", 2, 3, "frame"},
+                          Panel{"direct-sweep/shadow=hard", "difference", "", 1, 1, ""},
+                          Panel{"cornell-reference", "reference", "", 1, 3, ""},
+                          Panel{"direct-sweep/shadow=hard", "aux:atlas", "", 1, 2, "none"},
+                          Panel{"direct-sweep/shadow=pcf", "flip", "", 2, 1, "full:relmse"}));
+  // Without columns, one row of all the panels.
+  const results::FigureSpec& second = suite.figures[1];
+  EXPECT_EQ(second.columns, 2);
+  EXPECT_THAT(second.panels, ElementsAre(Panel{"cornell-reference", "image", "", 1, 1, ""},
+                                         Panel{"cornell-reference", "difference", "", 1, 2, ""}));
+}
+
+TEST_F(SuiteFileTest, FiguresRefuseUnknownJobsImagesSharedCellsAndRepeatedNames) {
+  const std::string unknown_job = expectErrorAt(figure(panel("direct-sweep/shadow=vsm", "image")),
+                                                "job = \"direct-sweep/shadow=vsm\"");
+  EXPECT_THAT(unknown_job, HasSubstr("figure 'f' panel 1: job 'direct-sweep/shadow=vsm' is not a "
+                                     "job of this suite"));
+  EXPECT_THAT(unknown_job, HasSubstr("cornell-reference, direct-sweep/shadow=hard, "
+                                     "direct-sweep/shadow=pcf, no-flip"));  // the choices
+
+  const std::string unknown_image = expectErrorAt(
+      figure(panel("cornell-reference", "image") + panel("cornell-reference", "atlas")),
+      "image = \"atlas\"");
+  EXPECT_THAT(unknown_image, HasSubstr("figure 'f' panel 2: image 'atlas' is not a picture"));
+  EXPECT_THAT(unknown_image, HasSubstr("image, reference, difference, flip or aux:<name>"));
+  EXPECT_THAT(expectErrorAt(figure(panel("cornell-reference", "aux:")), "image = \"aux:\""),
+              HasSubstr("image 'aux:' is not a picture"));
+  EXPECT_THAT(expectErrorAt(figure(panel("no-flip", "flip")), "image = \"flip\""),
+              HasSubstr("figure 'f' panel 1: job 'no-flip' does not measure flip"));
+
+  const std::string shared = expectErrorAt(
+      figure(panel("cornell-reference", "image", "row = 1\ncolumn = 2\n") +
+                 panel("cornell-reference", "reference", "row = 1\ncolumn = 2  # again\n"),
+             "2"),
+      "column = 2  # again");
+  EXPECT_THAT(shared, HasSubstr("figure 'f': panels 1 and 2 are both at row 1, column 2"));
+
+  EXPECT_THAT(
+      expectErrorAt(figure(panel("cornell-reference", "image", "column = 3\n"), "2"), "column = 3"),
+      HasSubstr("figure 'f' panel 1: column 3 is beyond the figure's 2 columns"));
+  EXPECT_THAT(expectErrorAt(figure(panel("cornell-reference", "image", "row = 1\ncolumn = 1\n") +
+                                       panel("cornell-reference", "reference", "row = 1  # full\n"),
+                                   "1"),
+                            "row = 1  # full"),
+              HasSubstr("figure 'f' panel 2: row 1 has no free cell"));
+
+  const std::string twice = figure(panel("cornell-reference", "image")) +
+                            "\n[[figure]]\nname = \"f\"  # again\ntitle = \"Fig. 2\"\n" +
+                            panel("cornell-reference", "reference");
+  EXPECT_THAT(expectErrorAt(twice, "name = \"f\"  # again"),
+              HasSubstr("figure name 'f' is also the name of the figure at line " +
+                        std::to_string(lineOf(twice, "[[figure]]"))));
+}
+
+TEST_F(SuiteFileTest, FiguresCheckTheirNamesPanelsAndMetrics) {
+  EXPECT_THAT(expectErrorAt(kFigureSuite + "\n[[figure]]\nname = \"fig 6\"\ntitle = \"t\"\n" +
+                                panel("cornell-reference", "image"),
+                            "name = \"fig 6\""),
+              HasSubstr("figure name 'fig 6' has characters other than"));
+  EXPECT_THAT(expectErrorAt(figure(""), "[[figure]]"), HasSubstr("figure 'f' has no panels"));
+  EXPECT_THAT(
+      errorOf(kFigureSuite + "\n[[figure]]\nname = \"f\"\n" + panel("cornell-reference", "image")),
+      HasSubstr("missing key 'figure.title'"));
+  EXPECT_THAT(
+      expectErrorAt(figure(panel("cornell-reference", "image", "colour = \"red\"\n")), "colour"),
+      HasSubstr("allowed keys: job, image, caption, row, column, metric"));
+  EXPECT_THAT(
+      expectErrorAt(figure(panel("cornell-reference", "image", "metric = \"fulll:relmse\"\n")),
+                    "metric = "),
+      HasSubstr("figure 'f' panel 1's metric 'fulll:relmse' has an unknown prefix"));
+  EXPECT_THAT(expectErrorAt(figure(panel("cornell-reference", "image", "metric = \"frame\"\n")),
+                            "metric = "),
+              HasSubstr("reference jobs are not timed"));
+  EXPECT_THAT(
+      expectErrorAt(figure(panel("direct-sweep/shadow=pcf", "image", "metric = \"shadow maps\"\n")),
+                    "metric = "),
+      HasSubstr("figure 'f' panel 1's metric 'shadow maps' names the pass 'shadow maps', which "
+                "technique 'direct' does not declare"));
+  EXPECT_THAT(expectErrorAt(figure(panel("cornell-reference", "image"), "0"), "columns = 0"),
+              HasSubstr("figure.columns"));
+}
+
 std::filesystem::path repositorySuite(const char* name) {
   return std::filesystem::path(GIB_SOURCE_DIR) / "suites" / name;
 }
@@ -648,7 +829,7 @@ TEST(RepositorySuites, SmokeSuiteParses) {
 }
 
 TEST(RepositorySuites, EveryFigureSuiteParsesAndShowsThePapersNumbersOrCharts) {
-  int count = 0;
+  int count = 0, figures = 0;
   for (const auto& entry : std::filesystem::directory_iterator(
            std::filesystem::path(GIB_SOURCE_DIR) / "suites" / "figures")) {
     if (entry.path().extension() != ".toml") continue;
@@ -657,8 +838,36 @@ TEST(RepositorySuites, EveryFigureSuiteParsesAndShowsThePapersNumbersOrCharts) {
     EXPECT_FALSE(expandSuite(suite).empty()) << entry.path();
     EXPECT_FALSE(suite.paper.empty() && suite.charts.empty())
         << entry.path() << " reproduces a figure: give it [[paper]] values or a [[chart]]";
+    figures += int(suite.figures.size());
   }
   EXPECT_GE(count, 1);
+  EXPECT_GE(figures, 5) << "the figure suites declare the documents' figures as [[figure]]s";
+}
+
+// The figure suites' [[figure]]s as their comments describe the documents' figures.
+TEST(RepositorySuites, FigureSuitesLayOutTheDocumentsFigures) {
+  using Panel = results::FigureSpec::Panel;
+  const Suite fig6 = loadSuiteFile(repositorySuite("figures/barsi-jakab-fig6.toml"));
+  ASSERT_EQ(fig6.figures.size(), 2u);
+  EXPECT_EQ(fig6.figures[0].name, "fig6");
+  EXPECT_EQ(fig6.figures[0].columns, 3);
+  std::vector<std::string> atlas_jobs;
+  for (const Panel& p : fig6.figures[0].panels) {
+    EXPECT_EQ(p.image, "aux:atlas");
+    EXPECT_EQ(p.row, 1);
+    atlas_jobs.push_back(p.job);
+  }
+  EXPECT_THAT(atlas_jobs, ElementsAre("iterations-1", "iterations-4", "iterations-50"));
+  EXPECT_EQ(fig6.figures[1].name, "fig5");
+  ASSERT_EQ(fig6.figures[1].panels.size(), 2u);
+  EXPECT_EQ(fig6.figures[1].panels[0].job, "iterations-50");
+  EXPECT_EQ(fig6.figures[1].panels[0].image, "image");
+  EXPECT_EQ(fig6.figures[1].panels[1].image, "reference");
+  for (const char* name :
+       {"nijasure-fig2.toml", "nijasure-fig3.toml", "nijasure-fig5.toml", "book-fig7-5.toml"}) {
+    const Suite suite = loadSuiteFile(repositorySuite((std::string("figures/") + name).c_str()));
+    EXPECT_FALSE(suite.figures.empty()) << name;
+  }
 }
 
 TEST(RepositorySuites, NightlySuiteCoversEverySceneAndTechnique) {

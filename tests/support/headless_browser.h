@@ -22,10 +22,19 @@ struct LoadedPage {
   std::string log;  // the browser's stderr (console messages are logged there)
 };
 
-// Opens `page` (an absolute path) with a 5-second virtual time budget and a fresh profile under
-// `work_dir`; the browser is killed after a minute of real time.
+// How a page's scripts see time: a tests' 5-second virtual budget (timers run at once, the DOM is
+// dumped when they are done), or real time (the DOM is dumped after the load event; for
+// measuring how long a page takes to load).
+enum class PageClock { kVirtual, kReal };
+
+// Opens `page` (an absolute path) with a fresh profile under `work_dir`; the browser is killed
+// after a minute of real time.
 LoadedPage loadPage(const std::filesystem::path& chromium, const std::filesystem::path& page,
-                    const std::filesystem::path& work_dir);
+                    const std::filesystem::path& work_dir, PageClock clock = PageClock::kVirtual);
+
+// The value of an attribute of the <html> element of a dumped DOM, entities decoded ("" when
+// absent).
+std::string rootAttribute(const std::string& dom, const std::string& name);
 
 // The value of data-report-check on the <html> element of a dumped DOM ("" when absent).
 std::string reportCheck(const std::string& dom);

@@ -10,6 +10,7 @@ void expectSameDeterministicResults(const results::RunResults& local,
   EXPECT_EQ(local.primary_metric, assembled.primary_metric);
   EXPECT_EQ(local.paper, assembled.paper);
   EXPECT_EQ(local.charts, assembled.charts);
+  EXPECT_EQ(local.figures, assembled.figures);
   for (std::size_t i = 0; i < local.jobs.size(); ++i) {
     const results::JobResult& a = local.jobs[i];
     const results::JobResult& b = assembled.jobs[i];

@@ -2,8 +2,10 @@
 
 #include "image/display.h"
 #include "image/image.h"
+#include "image/viewer_data.h"
 #include "support/synthetic_timings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -12,6 +14,7 @@ namespace gib::test {
 namespace {
 
 constexpr int kWidth = 32, kHeight = 24;
+constexpr int kAuxiliarySide = 16;  // auxiliary images: square, smaller than the job's pictures
 
 // Frame samples spread ±10% around the median, deterministically.
 std::vector<double> samples(double median, int frames) {
@@ -31,6 +34,9 @@ results::JobOutputs outputsOf(const std::string& slug, bool reference_job) {
     out.flip_png = dir + "flip.png";
     out.timings_json = dir + "timings.json";
   }
+  out.thumbnail_png = dir + "thumbnail.png";
+  out.viewer_data = dir + "viewer.js";
+  out.reference_viewer_data = "viewer/ref-all-0001.js";
   return out;
 }
 
@@ -174,6 +180,20 @@ results::RunResults syntheticReportResults(const std::string& run_id, const std:
   const std::string pcf = results.jobs[1].id;
   results.paper = {{pcf, "relmse", 0.002, "", "Nijasure et al. 2005, Table 1", "64x64 grid"},
                    {pcf, "frame", 40.0, "ms", "Nijasure et al. 2005, Table 1", "Radeon 9800 Pro"}};
+
+  // A figure as a figure suite declares it: the reference's picture beside the PCF image, the
+  // PCF job's atlas (of its own size) under it, and a panel whose auxiliary image the reference
+  // job does not have, so its page shows a note in that cell. The vsm job is in none.
+  results::FigureSpec figure;
+  figure.name = "fig-shadows";
+  figure.title = "Fig. 1: the reference, PCF and its radiance atlas";
+  figure.caption = "Path traced and PCF images above, the atlas under them.";
+  figure.columns = 2;
+  figure.panels = {{reference.id, "image", "Path traced", 1, 1, ""},
+                   {pcf, "image", "PCF", 1, 2, "frame"},
+                   {reference.id, "aux:atlas", "No atlas", 2, 1, "none"},
+                   {pcf, "aux:atlas", "PCF's radiance atlas", 2, 2, "full:relmse"}};
+  results.figures = {figure};
   return results;
 }
 
@@ -189,17 +209,57 @@ void writeSyntheticOutputs(const std::filesystem::path& run_dir,
       ++variant;
       if (path->empty()) continue;
       std::filesystem::create_directories((run_dir / *path).parent_path());
-      image::Image picture(job.width, job.height);
-      for (int y = 0; y < job.height; ++y)
-        for (int x = 0; x < job.width; ++x) {
+      // An auxiliary image has a size of its own (an atlas is square), as a figure may show it.
+      const bool auxiliary = variant > 4;
+      const int width = auxiliary ? kAuxiliarySide : job.width;
+      const int height = auxiliary ? kAuxiliarySide : job.height;
+      image::Image picture(width, height);
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
           float* p = picture.pixel(x, y);
-          p[0] = float(x) / float(job.width);
-          p[1] = float(y) / float(job.height);
+          p[0] = float(x) / float(width);
+          p[1] = float(y) / float(height);
           p[2] = 0.25f * float(variant);
         }
       image::writePng(run_dir / *path, picture);
     }
+    if (!out.thumbnail_png.empty())
+      image::writePng(run_dir / out.thumbnail_png, syntheticViewerImage(job, "thumbnail"));
+    // Linear data for the viewer: the image, its FLIP map and the shared reference.
+    const image::Image picture = syntheticViewerImage(job, "image");
+    const image::Image flip = syntheticViewerImage(job, "flip");
+    if (!out.viewer_data.empty())
+      image::writeViewerData(
+          run_dir / out.viewer_data, out.viewer_data,
+          {{"image", &picture}, {"flip", out.flip_png.empty() ? nullptr : &flip}});
+    if (!out.reference_viewer_data.empty()) {
+      std::filesystem::create_directories((run_dir / out.reference_viewer_data).parent_path());
+      const image::Image reference = syntheticViewerImage(job, "reference");
+      const image::Image standard_error = syntheticViewerImage(job, "stderr");
+      image::writeViewerData(run_dir / out.reference_viewer_data, out.reference_viewer_data,
+                             {{"reference", &reference}, {"stderr", &standard_error}});
+    }
   }
+}
+
+image::Image syntheticViewerImage(const results::JobResult& job, const std::string& layer) {
+  const int channels = layer == "flip" ? 1 : 3;
+  image::Image picture(job.width, job.height, channels);
+  for (int y = 0; y < job.height; ++y)
+    for (int x = 0; x < job.width; ++x) {
+      float* p = picture.pixel(x, y);
+      // Distinct, exactly representable in half floats: multiples of 1/64 up to 2.
+      const float base = float((x + 2 * y) % 32) / 16.0f;
+      if (layer == "flip") {
+        p[0] = float((x + y) % 16) / 16.0f;
+        continue;
+      }
+      const float offset = layer == "image" ? 0.125f : layer == "stderr" ? -0.5f : 0.0f;
+      p[0] = std::max(0.0f, base + offset);
+      p[1] = std::max(0.0f, 0.5f * base + offset);
+      p[2] = std::max(0.0f, 0.25f + offset);
+    }
+  return picture;
 }
 
 }  // namespace gib::test

@@ -2,6 +2,7 @@
 // benchmarks: small PNGs under jobs/<slug>/ and results covering every part of a report.
 #pragma once
 
+#include "image/image.h"
 #include "results/results.h"
 
 #include <filesystem>
@@ -23,13 +24,22 @@ results::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse
 
 // The run of three jobs (run id `run_id`, commit `commit`): the Cornell reference (no timings,
 // no FLIP map, convergence over spp), `direct` with shadow=pcf (every output, paper values for
-// relmse and the frame) and `direct` with shadow=vsm (a two-point convergence, so no interval).
+// relmse and the frame) and `direct` with shadow=vsm (a two-point convergence, so no interval);
+// two charts and a 2 × 2 figure "fig-shadows" of the first two jobs (one panel names an auxiliary
+// image its job lacks). Auxiliary images are written 16 × 16, the others 32 × 24.
 results::RunResults syntheticReportResults(
     const std::string& run_id = "20261122-100405-smoke-1a2b3c4d",
     const std::string& commit = "0123456789abcdef");
 
-// Writes the PNGs every job of `results` lists (a few pixels each) under `run_dir`.
+// Writes the PNGs every job of `results` lists (a few pixels each) under `run_dir`, and the
+// viewer data (image/viewer_data.h) of syntheticViewerImage's layers.
+
 void writeSyntheticOutputs(const std::filesystem::path& run_dir,
                            const results::RunResults& results);
+
+// The linear layer `layer` ("image", "reference", "stderr": RGB; "flip": one channel) of a
+// synthetic job's viewer data, with values exactly representable as half floats; "thumbnail"
+// is the image as well.
+image::Image syntheticViewerImage(const results::JobResult& job, const std::string& layer);
 
 }  // namespace gib::test

@@ -81,8 +81,9 @@ results::RunResults richResults() {
   technique.iterate_ms = 2.25;
   technique.iterations = 4;
   technique.outputs = {
-      "jobs/a.exr",    "jobs/a.png",          "jobs/ref.png",          "jobs/diff.png",
-      "jobs/flip.png", "jobs/a-timings.json", "slurm/1/logs/gpu-0.log"};
+      "jobs/a.exr",       "jobs/a.png",          "jobs/ref.png",           "jobs/diff.png",
+      "jobs/flip.png",    "jobs/a-timings.json", "slurm/1/logs/gpu-0.log", "jobs/a-thumbnail.png",
+      "jobs/a-viewer.js", "viewer/ref.js"};
   technique.execution = {"node7", "1234_5", 12.5, "llvmpipe (LLVM 15.0.6, 256 bits)"};
   technique.iteration_timings = frameTimings({1.5, 2.0, 2.5, 3.0}, "cpu", "iteration");
   technique.statistics = {{"vertices", 1536}, {"atlas_texels", 12000}};
@@ -130,6 +131,12 @@ results::RunResults richResults() {
                 "Radeon 9800 Pro"}};
   run.charts = {{"Frame time against light samples", "cornell-direct/*", "parameter:light_samples",
                  "frame", "parameter:shadow", true, false, true}};
+  run.figures = {{"fig-6",
+                  "Fig. 6: the atlas & the \"image\"",
+                  "",
+                  3,
+                  {{"cornell-direct/shadow=pcf", "aux:atlas", "atlas", 1, 3, "full:relmse"},
+                   {"cornell-reference", "image", "", 2, 1, ""}}}};
   return run;
 }
 

@@ -24,8 +24,8 @@ results::JobResult syntheticJob(const std::string& id, const results::NamedValue
 results::RunResults syntheticRun(const std::string& id, std::vector<results::JobResult> jobs);
 
 // A run with every optional part present (full reference, convergence, timings, paper values,
-// per-metric tolerances, infinite values) beside a reference job where they are absent. No NaN,
-// so that operator== can compare a round trip.
+// charts, a figure, per-metric tolerances, infinite values) beside a reference job where they are
+// absent. No NaN, so that operator== can compare a round trip.
 results::RunResults richResults();
 
 }  // namespace gib::test

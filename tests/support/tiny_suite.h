@@ -4,7 +4,7 @@
 namespace gib::test {
 
 // Small enough for seconds per run: a 32x32 Cornell box, a 1024-spp reference with a convergence
-// series, and the direct technique with two shadow filters.
+// series, and the direct technique with two shadow filters, with a paper value and a figure.
 inline constexpr const char* kTinySuite = R"(name = "tiny"
 description = "a tiny suite for the tests"
 
@@ -37,6 +37,27 @@ quantity = "frame"
 value = 3.5
 unit = "ms"
 source = "a made-up paper"
+
+[[figure]]
+name = "shadows"
+title = "Hard and PCF shadows beside the reference"
+
+[[figure.panel]]
+job = "cornell-direct/shadow=hard"
+image = "image"
+caption = "hard"
+
+[[figure.panel]]
+job = "cornell-direct/shadow=pcf"
+image = "image"
+caption = "PCF"
+metric = "frame"
+
+[[figure.panel]]
+job = "cornell-direct/shadow=pcf"
+image = "reference"
+caption = "reference"
+metric = "none"
 )";
 
 }  // namespace gib::test
