@@ -2,7 +2,11 @@
 // convergence, coloured against a previous run, trends over 20 runs), and each SVG chart alone;
 // and how long the index of a 100-job run (128² pictures, thumbnails, viewer data) takes to load
 // in headless Chromium, measured by the page itself (navigation to load event).
+#include "reports/figure_composite.h"
 #include "reports/html_report.h"
+#include "reports/junit_report.h"
+#include "reports/markdown_summary.h"
+#include "reports/run_comparison.h"
 #include "reports/svg_charts.h"
 #include "support/headless_browser.h"
 #include "support/synthetic_report_run.h"
@@ -129,6 +133,32 @@ void BM_IndexOf100JobsLoadsInChromium(benchmark::State& state) {
   state.counters["page_bytes"] = double(pageWeight(fixture.index));
 }
 BENCHMARK(BM_IndexOf100JobsLoadsInChromium)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// The CI outputs of the same 50-job run against its previous run: the comparison (shared by
+// the report), then the JUnit XML and the Markdown summary.
+void BM_JunitAndSummary50Jobs(benchmark::State& state) {
+  static ReportFixture fixture;
+  for (auto _ : state) {
+    const reports::RunComparison comparison(fixture.results, fixture.context.previous,
+                                            fixture.context.history);
+    benchmark::DoNotOptimize(reports::junitReport(fixture.results, comparison, fixture.dir));
+    benchmark::DoNotOptimize(reports::markdownSummary(fixture.results, comparison, fixture.dir));
+  }
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * kJobs);
+}
+BENCHMARK(BM_JunitAndSummary50Jobs)->Unit(benchmark::kMillisecond);
+
+// A figure's PNG: the synthetic run's figure, its panels read, composited and written.
+void BM_FigureComposite(benchmark::State& state) {
+  const bench::TemporaryDirectory temporary{"gib-figure-bench"};
+  const results::RunResults results = test::syntheticReportResults();
+  test::writeSyntheticOutputs(temporary.path(), results);
+  const fs::path target = temporary.path() / "figure.png";
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        reports::writeFigurePng(temporary.path(), results, results.figures.front(), target));
+}
+BENCHMARK(BM_FigureComposite)->Unit(benchmark::kMicrosecond);
 
 void BM_PassTimingChart(benchmark::State& state) {
   const std::vector<reports::PassBar> passes = {{"frame", 0, 20, 19, 21},

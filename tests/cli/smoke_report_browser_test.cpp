@@ -1,6 +1,7 @@
-// The smoke suite's report, end to end: `gibench run` on suites/smoke.toml (shrunk to 32x32 and
-// 64 spp so the test stays quick, everything else as shipped), then every page of its report in
-// headless Chromium: no console errors, every image decoded and every chart drawn.
+// The smoke suite's report and a figure suite's, end to end: `gibench run` on suites/smoke.toml
+// and suites/figures/barsi-jakab-fig6.toml (shrunk to 32x32 and 64 spp so the test stays quick,
+// everything else as shipped), then every page of their reports in headless Chromium (index, job
+// pages, figure pages): no console errors, every image and viewer ready and every chart drawn.
 #include "results/results.h"
 #include "results/results_json.h"
 #include "support/headless_browser.h"
@@ -17,6 +18,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Every page of the report in `run`: index.html and report/*.html.
+void expectEveryPageLoads(const fs::path& chromium, const fs::path& run, const fs::path& work) {
+  std::vector<fs::path> pages = {run / "index.html"};
+  for (const fs::directory_entry& entry : fs::directory_iterator(run / "report"))
+    if (entry.path().extension() == ".html") pages.push_back(entry.path());
+  for (const fs::path& page : pages) {
+    SCOPED_TRACE(page.string());
+    const test::LoadedPage loaded = test::loadPage(chromium, page, work);
+    ASSERT_EQ(loaded.exit_code, 0) << loaded.log;
+    EXPECT_EQ(test::reportCheck(loaded.dom), "ok") << loaded.log;
+    EXPECT_EQ(test::consoleProblems(loaded.log), std::vector<std::string>{}) << loaded.log;
+  }
+}
+
 TEST(SmokeReport, EveryPageLoadsInABrowserAndPassesItsSelfCheck) {
   GIB_REQUIRE_CHROMIUM(chromium);
   test::TempDir dir;
@@ -32,17 +47,27 @@ TEST(SmokeReport, EveryPageLoadsInABrowserAndPassesItsSelfCheck) {
   }
   const results::RunResults results = results::readResultsFile(run);
   ASSERT_EQ(results.run.suite, "smoke");
-  std::vector<fs::path> pages = {run / "index.html"};
   for (const results::JobResult& job : results.jobs)
-    pages.push_back(run / "report" / (job.slug + ".html"));
-  for (const fs::path& page : pages) {
-    SCOPED_TRACE(page.string());
-    ASSERT_TRUE(fs::is_regular_file(page));
-    const test::LoadedPage loaded = test::loadPage(*chromium, page, dir.path());
-    ASSERT_EQ(loaded.exit_code, 0) << loaded.log;
-    EXPECT_EQ(test::reportCheck(loaded.dom), "ok") << loaded.log;
-    EXPECT_EQ(test::consoleProblems(loaded.log), std::vector<std::string>{}) << loaded.log;
-  }
+    ASSERT_TRUE(fs::is_regular_file(run / "report" / (job.slug + ".html"))) << job.id;
+  expectEveryPageLoads(*chromium, run, dir.path());
+}
+
+TEST(SmokeReport, EveryPageOfAFigureSuitesReportLoads) {
+  GIB_REQUIRE_CHROMIUM(chromium);
+  test::TempDir dir;
+  std::ofstream(dir / "figure.toml") << test::shrunkFigureSuite("barsi-jakab-fig6");
+  const fs::path run = dir / "run";
+  const test::CommandResult r =
+      test::runGibench({"run", (dir / "figure.toml").string(), "--out", run.string(), "--store",
+                        (dir / "store").string(), "--no-history"},
+                       dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const results::RunResults results = results::readResultsFile(run);
+  ASSERT_FALSE(results.figures.empty());
+  for (const results::FigureSpec& figure : results.figures)
+    ASSERT_TRUE(fs::is_regular_file(run / "report" / ("figure-" + figure.name + ".html")))
+        << figure.name;
+  expectEveryPageLoads(*chromium, run, dir.path());
 }
 
 }  // namespace

@@ -176,6 +176,28 @@ TEST_F(ImageViewerBrowser, AViewInTheAddressIsRestored) {
   EXPECT_EQ(start["probe"]["y"], 5);
 }
 
+TEST_F(ImageViewerBrowser, ARunWrittenBeforeViewerDataShowsItsPngs) {
+  GIB_REQUIRE_CHROMIUM(chromium);
+  // results.json of an older run: no viewer data listed, so the report falls back to the PNGs.
+  for (results::JobResult& job : results_.jobs) {
+    job.outputs.viewer_data.clear();
+    job.outputs.reference_viewer_data.clear();
+  }
+  writeHtmlReport(run_dir_, results_, {});
+  const results::JobResult& job = results_.jobs[1];
+  const test::LoadedPage loaded =
+      test::loadPage(*chromium, run_dir_ / "report" / (job.slug + ".html"), dir_.path());
+  EXPECT_EQ(test::reportCheck(loaded.dom), "ok") << loaded.log;
+  EXPECT_EQ(test::consoleProblems(loaded.log), std::vector<std::string>{}) << loaded.log;
+  EXPECT_NE(loaded.dom.find("data-viewer-state=\"ready\""), std::string::npos);
+  EXPECT_EQ(loaded.dom.find("<script src="), std::string::npos);  // no data to load
+  // Exposure and false colour need linear values: offered disabled, and the page says why.
+  EXPECT_NE(loaded.dom.find("data-role=\"exposure\" min=\"-10\" max=\"10\" step=\"0.5\" "
+                            "value=\"0\" disabled"),
+            std::string::npos);
+  EXPECT_NE(loaded.dom.find("no linear viewer data"), std::string::npos);
+}
+
 TEST_F(ImageViewerBrowser, MissingViewerDataFailsTheSelfCheck) {
   GIB_REQUIRE_CHROMIUM(chromium);
   const results::JobResult& job = results_.jobs[1];

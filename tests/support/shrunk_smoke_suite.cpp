@@ -7,14 +7,24 @@
 
 namespace gib::test {
 
-std::string shrunkSmokeSuite() {
-  std::ifstream in(std::filesystem::path(GIB_SOURCE_DIR) / "suites" / "smoke.toml");
+namespace {
+
+std::string shrunk(const std::filesystem::path& relative) {
+  std::ifstream in(std::filesystem::path(GIB_SOURCE_DIR) / relative);
   std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   text = std::regex_replace(text, std::regex(R"((width|height) = \d+)"), "$1 = 32");
-  text = std::regex_replace(text, std::regex(R"(spp = \d+)"), "spp = 64");
-  text = std::regex_replace(text, std::regex(R"(checkpoints = \[[^\]]*\])"),
+  return std::regex_replace(text, std::regex(R"(spp = \d+)"), "spp = 64");
+}
+
+}  // namespace
+
+std::string shrunkSmokeSuite() {
+  return std::regex_replace(shrunk("suites/smoke.toml"), std::regex(R"(checkpoints = \[[^\]]*\])"),
                             "checkpoints = [4, 16, 64]");
-  return text;
+}
+
+std::string shrunkFigureSuite(const std::string& name) {
+  return shrunk(std::filesystem::path("suites/figures") / (name + ".toml"));
 }
 
 }  // namespace gib::test

@@ -1,11 +1,16 @@
-// suites/smoke.toml as shipped, shrunk for tests: 32x32 images, 64-spp references, checkpoints
-// [4, 16, 64]; every case and parameter otherwise as the quick start runs it.
+// Shipped suites shrunk for tests: 32x32 images and 64-spp references, every case and parameter
+// otherwise as shipped.
 #pragma once
 
 #include <string>
 
 namespace gib::test {
 
+// suites/smoke.toml as the quick start runs it, shrunk, with checkpoints [4, 16, 64].
 std::string shrunkSmokeSuite();
+
+// suites/figures/<name>.toml, shrunk; its checkpoints and iteration counts as shipped (they are
+// what its figures show).
+std::string shrunkFigureSuite(const std::string& name);
 
 }  // namespace gib::test
