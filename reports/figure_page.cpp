@@ -45,7 +45,7 @@ std::string panelHtml(const fs::path& run_dir, const results::RunResults& result
       "grid-column: {1}\">\n",
       panel.row, panel.column);
   if (picture.path.empty()) {
-    html += fmt::format("<div class=\"figure-placeholder\">No picture: {}.</div>\n",
+    html += fmt::format("<div class=\"figure-absent\">No picture: {}.</div>\n",
                         escapeHtml(picture.absent));
   } else {
     const std::string alt =

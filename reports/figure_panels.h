@@ -14,7 +14,8 @@ namespace gib::reports {
 struct PanelPicture {
   const results::JobResult* job = nullptr;  // null when the run has no such job
   std::string path;    // relative to the run directory (or absolute); empty when absent
-  std::string absent;  // why there is no picture (for the page's placeholder); empty when present
+  std::string absent;  // why there is no picture (the page shows it in the panel's cell); empty
+                       // when present
 };
 
 // An auxiliary image ("aux:atlas") is known only once the job ran, and a listed file may be gone

@@ -160,10 +160,16 @@ void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
   const fs::path reference_png = job_dir / "reference.png";
   image::writePng(reference_png, reference.mean);
   outputs.reference_png = relativePath(run_dir, reference_png);
-  const fs::path thumbnail = job_dir / "thumbnail.png";
-  image::writePng(thumbnail, image::downsampleToWidth(test.width() > 0 ? test : reference.mean,
-                                                      kThumbnailWidth));
-  outputs.thumbnail_png = relativePath(run_dir, thumbnail);
+  // A picture that is small enough already is its own thumbnail: no second copy of it.
+  const image::Image& pictured = test.width() > 0 ? test : reference.mean;
+  const std::string& small_enough = test.width() > 0 ? outputs.image_png : outputs.reference_png;
+  if (pictured.width() <= kThumbnailWidth && !small_enough.empty()) {
+    outputs.thumbnail_png = small_enough;
+  } else {
+    const fs::path thumbnail = job_dir / "thumbnail.png";
+    image::writePng(thumbnail, image::downsampleToWidth(pictured, kThumbnailWidth));
+    outputs.thumbnail_png = relativePath(run_dir, thumbnail);
+  }
   outputs.reference_viewer_data = writeReferenceViewerData(run_dir, reference);
   const image::Image* flip = nullptr;
   for (const auto& [name, map] : report.maps)

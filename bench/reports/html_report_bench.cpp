@@ -72,7 +72,6 @@ struct LoadFixture {
   fs::path index;
   LoadFixture() {
     results::RunResults results = test::syntheticReportResults("20261122-100405-nightly-1a2b3c4d");
-    results::RunResults previous = results;
     results.jobs.resize(1);  // the reference
     for (int i = 0; i < kLoadJobs - 1; ++i) {
       results::JobResult job =
@@ -82,7 +81,7 @@ struct LoadFixture {
     }
     results.jobs[0].width = results.jobs[0].height = 128;
     test::writeSyntheticOutputs(dir, results);
-    previous = results;
+    results::RunResults previous = results;
     previous.run.id = "20261121-100405-nightly-00000000";
     previous.run.started = "2026-11-21T10:04:05Z";
     for (int i = 1; i < kLoadJobs; i += 10) previous.jobs[i].metrics[0].second *= 0.5;

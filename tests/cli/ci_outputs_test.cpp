@@ -25,11 +25,8 @@ using ::testing::HasSubstr;
 class CiOutputs : public ::testing::Test {
  protected:
   void SetUp() override {
-    fs::create_directories(run_dir_);
     results_ = syntheticReportResults();
-    results_.run.store = (dir_ / "store").string();  // no history database there
-    writeSyntheticOutputs(run_dir_, results_);
-    results::writeResultsFile(run_dir_ / "results.json", results_);
+    writeSyntheticRunDirectory(run_dir_, results_, dir_ / "store");  // no history database there
   }
 
   // A history database whose previous run of the suite had half the pcf job's relmse.

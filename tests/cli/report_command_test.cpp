@@ -20,11 +20,8 @@ namespace fs = std::filesystem;
 class ReportCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    fs::create_directories(run_dir_);
     results_ = syntheticReportResults();
-    results_.run.store = (dir_ / "store").string();  // no history database there
-    writeSyntheticOutputs(run_dir_, results_);
-    results::writeResultsFile(run_dir_ / "results.json", results_);
+    writeSyntheticRunDirectory(run_dir_, results_, dir_ / "store");  // no history database there
   }
 
   TempDir dir_;

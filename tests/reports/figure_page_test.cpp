@@ -105,7 +105,7 @@ TEST_F(FigurePage, PanelsSitInTheirDeclaredCellsWithCaptionsAndNumbers) {
   // (2, 1): the reference job has no atlas: a note instead of a picture, and metric "none".
   const std::string missing = cell(page, 2, 1);
   EXPECT_THAT(missing, Not(HasSubstr("<img")));
-  EXPECT_THAT(missing, HasSubstr("class=\"figure-placeholder\">" +
+  EXPECT_THAT(missing, HasSubstr("class=\"figure-absent\">" +
                                  escapeHtml("No picture: job '" + reference.id +
                                             "' has no auxiliary image 'atlas' (it has none).") +
                                  "</div>"));

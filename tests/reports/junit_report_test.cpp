@@ -179,10 +179,7 @@ TEST(JunitReport, WithoutAPreviousRunNothingRegresses) {
 TEST(JunitReport, AFailedJobIsAnError) {
   results::RunResults results = test::syntheticReportResults();
   results::JobResult& failed = results.jobs[2];
-  failed.failure = "no result: the task was cancelled\nslurmstepd: CANCELLED AT 10:05";
-  failed.metrics.clear();
-  failed.metrics_full.clear();
-  failed.timings.reset();
+  test::markFailed(failed, "no result: the task was cancelled\nslurmstepd: CANCELLED AT 10:05");
   const Junit junit = junitOf(results, previousRun());
   expectCounts(junit, 3, 0, 1, 0);
   const test::XmlElement* error = junit.testCase(failed.id)->child("error");

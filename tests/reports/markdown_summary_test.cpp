@@ -211,10 +211,7 @@ TEST(MarkdownSummary, NothingToReportSaysNoRegressions) {
 TEST(MarkdownSummary, FailedJobsMissingJobsAndPaperValuesOutOfToleranceAreListed) {
   results::RunResults results = test::syntheticReportResults();
   results::JobResult& failed = results.jobs[2];
-  failed.failure = "the GL context could not be created | <no device>";
-  failed.metrics.clear();
-  failed.metrics_full.clear();
-  failed.timings.reset();
+  test::markFailed(failed, "the GL context could not be created | <no device>");
   const results::JobResult& pcf = results.jobs[1];
   results.paper = {{pcf.id, "relmse", *pcf.metric("relmse") * 2, "", "Paper A", "", 0.1}};
   results::RunResults previous = previousRun();

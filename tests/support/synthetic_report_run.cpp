@@ -3,6 +3,7 @@
 #include "image/display.h"
 #include "image/image.h"
 #include "image/viewer_data.h"
+#include "results/results_json.h"
 #include "support/synthetic_timings.h"
 
 #include <algorithm>
@@ -240,6 +241,21 @@ void writeSyntheticOutputs(const std::filesystem::path& run_dir,
                              {{"reference", &reference}, {"stderr", &standard_error}});
     }
   }
+}
+
+void writeSyntheticRunDirectory(const std::filesystem::path& run_dir, results::RunResults& results,
+                                const std::filesystem::path& store) {
+  std::filesystem::create_directories(run_dir);
+  results.run.store = store.string();
+  writeSyntheticOutputs(run_dir, results);
+  results::writeResultsFile(run_dir / "results.json", results);
+}
+
+void markFailed(results::JobResult& job, const std::string& reason) {
+  job.failure = reason;
+  job.metrics.clear();
+  job.metrics_full.clear();
+  job.timings.reset();
 }
 
 image::Image syntheticViewerImage(const results::JobResult& job, const std::string& layer) {

@@ -37,6 +37,15 @@ results::RunResults syntheticReportResults(
 void writeSyntheticOutputs(const std::filesystem::path& run_dir,
                            const results::RunResults& results);
 
+// A run directory as `gibench report` reads it: writeSyntheticOutputs and results.json under
+// `run_dir` (created), with the run's store set to `store` (where no history database is).
+void writeSyntheticRunDirectory(const std::filesystem::path& run_dir, results::RunResults& results,
+                                const std::filesystem::path& store);
+
+// Makes `job` a job that failed to run with `reason`: no metrics and no timings, as a merge
+// records it.
+void markFailed(results::JobResult& job, const std::string& reason);
+
 // The linear layer `layer` ("image", "reference", "stderr": RGB; "flip": one channel) of a
 // synthetic job's viewer data, with values exactly representable as half floats; "thumbnail"
 // is the image as well.
