@@ -7,12 +7,15 @@
 #
 #   scripts/cross-check-cycles.sh SCENE [--scene-set key=value ...] [--width W] [--height H]
 #                                 [--spp N] [--seed S] [--truth-spp N] [--replicas K] [--out DIR]
-#                                 [--cycles-no-light-sampling]
+#                                 [--cycles-no-light-sampling] [--own-truth]
 #
 # The truth is a Cycles render when the scene maps exactly onto Cycles; when it does not (the
 # exporter's warnings say what differs: Phong lobes, a spot fall-off, a medium), the two images
 # estimate different integrals, so each renderer's MSE is taken against a long render of its own.
-# --replicas K is passed to `gibench render` (its default: 8 replicas, the error bars' cost).
+# --own-truth measures each renderer against a long render of its own for an exact scene too:
+# its MSE is then its noise alone, without the small systematic difference between the renderers
+# (which the means and the worst block show). --replicas K is passed to `gibench render` (its
+# default: 8 replicas, the error bars' cost).
 #
 # --cycles-no-light-sampling renders both Cycles images with emissive meshes left to BSDF
 # sampling: noisier, but free of the slight darkening of Cycles' light sampling at grazing angles
@@ -34,7 +37,7 @@ fail() {
 
 usage="usage: scripts/cross-check-cycles.sh SCENE [--scene-set key=value ...] [--width W]"
 usage+=" [--height H] [--spp N] [--seed S] [--truth-spp N] [--replicas K] [--out DIR]"
-usage+=" [--cycles-no-light-sampling]"
+usage+=" [--cycles-no-light-sampling] [--own-truth]"
 scene=""
 scene_set=()
 width=256
@@ -44,11 +47,16 @@ seed=0
 truth_spp=0
 replicas=0
 out=""
+own_truth=0
 cycles_options=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --cycles-no-light-sampling)
       cycles_options=(--no-light-sampling)
+      shift
+      ;;
+    --own-truth)
+      own_truth=1
       shift
       ;;
     --scene-set | --width | --height | --spp | --seed | --truth-spp | --replicas | --out)
@@ -179,7 +187,7 @@ truth_args=()
 if [ "$truth_spp" -gt 0 ]; then
   (cycles "$out/truth.exr" "$out/truth.log" --spp "$truth_spp" --seed "$((seed + 1))")
   gibench_truth="$out/truth.exr"
-  if [ "$exact" -eq 0 ]; then
+  if [ "$exact" -eq 0 ] || [ "$own_truth" -eq 1 ]; then
     gibench_truth="$out/gibench-truth.exr"
     step "$out/gibench-truth.log" "$gibench" render --scene "$scene" "${scene_set[@]}" \
       --width "$width" --height "$height" --spp "$truth_spp" --seed "$((seed + 1))" \
@@ -197,13 +205,14 @@ step "$out/compare.json" "$gibench" compare "$out/gibench.exr" "$out/cycles.exr"
   --metrics flip,block_bias --json
 python3 - "$scene ${scene_set[*]}" "$width" "$height" "$spp" "$seed" "$truth_spp" "$out" \
   "$gibench_seconds" "$gibench_clock" "$cycles_seconds" "$cycles_clock" "$out/compare.json" \
-  "$gibench_sampler" "$exact" "${truth_args[@]}" <<'EOF'
+  "$gibench_sampler" "$exact" "$own_truth" "${truth_args[@]}" <<'EOF'
 import json, sys
 
 (scene, width, height, spp, seed, truth_spp, out, g_time, g_clock, c_time, c_clock,
- compare, g_sampler, exact) = sys.argv[1:15]
-truth = sys.argv[15:]
+ compare, g_sampler, exact, own_truth) = sys.argv[1:16]
+truth = sys.argv[16:]
 exact = exact == "1"
+own_truth = own_truth == "1"
 g_time, c_time = float(g_time), float(c_time)
 both = json.load(open(compare))
 means = both["means"]
@@ -231,7 +240,7 @@ print(f"{'time (s)':<28}{g_time:>14.3f}{c_time:>14.3f}  GI Bench: {g_clock}; Cyc
 if truth:
     g_mse = json.load(open(truth[0]))["metrics"]["mse"]
     c_mse = json.load(open(truth[1]))["metrics"]["mse"]
-    whose = "Cycles" if exact else "each renderer's own"
+    whose = "Cycles" if exact and not own_truth else "each renderer's own"
     print(f"{'MSE vs truth':<28}{g_mse:>14.6g}{c_mse:>14.6g}  truth: {whose}, {truth_spp} spp, "
           f"seed {int(seed) + 1}")
     g_eff, c_eff = 1 / (g_mse * g_time), 1 / (c_mse * c_time)

@@ -2,7 +2,7 @@
 # scripts/cross-check-cycles.sh end to end with the real Blender, on the empty Cornell box at
 # 64x48 and 256 spp (truth: 256 spp): every line of the comparison is printed, and the two
 # renderers' image means agree within their noise. The chamber, which Cycles renders differently,
-# is measured against each renderer's own truth. Then bad input: one line, exit code 2.
+# is measured against each renderer's own truth, as the box is with --own-truth. Then bad input: one line, exit code 2.
 #
 #   tests/scripts/cross_check_cycles_test.sh GIBENCH SOURCE_DIR
 #
@@ -53,6 +53,13 @@ grep -q "is not mapped exactly: Phong material" "$work/chamber.err" || fail "no 
 grep -q "(sobol, 2 replicas)" "$work/chamber.txt" || fail "--replicas 2 not passed to gibench"
 grep -q "truth: each renderer's own, 16 spp" "$work/chamber.txt" || fail "not each one's own truth"
 [ -f "$work/chamber/gibench-truth.exr" ] || fail "no GI Bench truth rendered for the chamber"
+
+# --own-truth: an exactly mapped scene measured against each renderer's own long render too.
+GIBENCH="$gibench" "$script" cornell --scene-set blocks=false --width 32 --height 24 --spp 4 \
+  --truth-spp 16 --own-truth --out "$work/own" >"$work/own.txt" 2>"$work/own.err" ||
+  fail "the cross-check with --own-truth exited with $?: $(cat "$work/own.err")"
+grep -q "truth: each renderer's own, 16 spp" "$work/own.txt" || fail "--own-truth not applied"
+[ -f "$work/own/gibench-truth.exr" ] || fail "no GI Bench truth rendered with --own-truth"
 
 # Bad input: one line naming the problem, exit code 2, no directory left behind.
 expect_refusal() {
