@@ -251,11 +251,14 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
     }
 
     // Russian roulette: survive with probability q and divide by q, which keeps the estimator
-    // unbiased. q is the throughput itself, so surviving paths keep a weight of about one: a cap
-    // below one (0.95, say) would let the weights of long paths in a lossless medium grow as
-    // 0.95^−k, a heavy tail that hides energy in rare paths at any practical sample count.
+    // unbiased. q follows the throughput, so weights never grow: a fixed cap below one (0.95,
+    // say) would let the weights of long paths in a lossless medium grow as 0.95^−k, a heavy tail
+    // that hides energy in rare paths at any practical sample count. q = √throughput rather than
+    // the throughput itself ends paths later (survivors' weights fall as √throughput): at equal
+    // spp it cost 5–15% more time for 12–19% less MSE on the empty box, `cornell` and `chamber`,
+    // 5–11% more efficient (docs/rendering.md, "Russian roulette").
     if (bounces >= kRouletteStartBounce) {
-      const float q = std::min(1.0f, maxComponent(throughput));
+      const float q = std::min(1.0f, std::sqrt(maxComponent(throughput)));
       if (q < 1.0f) {
         if (sampler.get1D(VertexDimension::kRoulette) >= q) break;
         throughput /= q;
