@@ -2,7 +2,8 @@
 # scripts/cross-check-cycles.sh end to end with the real Blender, on the empty Cornell box at
 # 64x48 and 256 spp (truth: 256 spp): every line of the comparison is printed, and the two
 # renderers' image means agree within their noise. The chamber, which Cycles renders differently,
-# is measured against each renderer's own truth, as the box is with --own-truth. Then bad input: one line, exit code 2.
+# is measured against each renderer's own truth, as the box is with --own-truth. Then bad input:
+# one line, exit code 2.
 #
 #   tests/scripts/cross_check_cycles_test.sh GIBENCH SOURCE_DIR
 #
