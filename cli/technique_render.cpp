@@ -43,6 +43,7 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   settings.iterations = o.iterations;
   if (o.clock != "auto") settings.precise = o.clock == "cpu";
   settings.context.device = o.gl_device;
+  settings.services.ray_caster = ref::embreeRayCasterFactory();
   settings.context.debug = rt::gl::debugOutputByDefault();
 
   const rt::TechniqueRunResult result = rt::runTechnique(scene, info, parameters, settings);

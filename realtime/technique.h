@@ -7,6 +7,7 @@
 #include "image/image.h"
 #include "realtime/pass_declarations.h"
 #include "scene/path_class.h"
+#include "scene/ray_caster.h"
 
 #include <functional>
 #include <memory>
@@ -44,11 +45,21 @@ struct TechniqueStatistic {
   double value = 0;
 };
 
+// What the harness lends a technique besides the GPU scene. The ray caster is the reference's
+// Embree BVH (the realtime layer may not include the reference), for preprocessing that traces
+// rays on the CPU; empty where the caller has none to lend.
+struct TechniqueServices {
+  scene::RayCasterFactory ray_caster;
+};
+
 // Constructing a technique (TechniqueInfo::create) must do no GL work: `gibench list` builds one
 // without a context to ask its path class. GL objects are made in prepare().
 class Technique {
  public:
   virtual ~Technique() = default;
+
+  // Called once before prepare() with what the harness lends (TechniqueServices).
+  virtual void provide(const TechniqueServices& /*services*/) {}
 
   // Builds everything that depends on the scene and the output size (programs, shadow maps,
   // volumes). Called once, after the scene has been uploaded; its time is reported separately.

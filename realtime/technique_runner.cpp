@@ -91,6 +91,7 @@ TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& 
     std::optional<GpuScene> gpu_scene;
     result.upload_ms = gl::finishedMilliseconds(
         [&] { gpu_scene.emplace(scene, settings.width, settings.height); });
+    technique->provide(settings.services);
     result.prepare_ms = gl::finishedMilliseconds(
         [&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
     result.statistics = technique->statistics();

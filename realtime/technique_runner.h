@@ -30,6 +30,7 @@ struct TechniqueRunSettings {
   // also captured, unprofiled: an error-against-iterations series from one run.
   std::vector<int> capture_after;
   gl::ContextOptions context;
+  TechniqueServices services;  // lent to the technique before prepare()
 };
 
 // The image after a number of iterations, and the iteration time spent to get there.

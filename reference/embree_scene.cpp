@@ -127,4 +127,27 @@ std::string embreeVersion() {
   return fmt::format("{}.{}.{}", RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
 }
 
+namespace {
+
+class EmbreeRayCaster final : public scene::RayCaster {
+ public:
+  explicit EmbreeRayCaster(const scene::Scene& scene) : embree_(scene) {}
+  scene::RayHit intersect(const glm::vec3& origin, const glm::vec3& direction,
+                          float t_near) const override {
+    return embree_.intersect(origin, direction, t_near);
+  }
+  float rayEpsilon() const override { return embree_.rayEpsilon(); }
+
+ private:
+  EmbreeScene embree_;
+};
+
+}  // namespace
+
+scene::RayCasterFactory embreeRayCasterFactory() {
+  return [](const scene::Scene& scene) -> std::unique_ptr<scene::RayCaster> {
+    return std::make_unique<EmbreeRayCaster>(scene);
+  };
+}
+
 }  // namespace gib::ref

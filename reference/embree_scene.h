@@ -2,6 +2,7 @@
 // included only in reference/*.cpp (docs/architecture.md, "Layers"); this header hides it.
 #pragma once
 
+#include "scene/ray_caster.h"
 #include "scene/scene.h"
 
 #include <glm/vec3.hpp>
@@ -13,12 +14,8 @@
 
 namespace gib::ref {
 
-struct Hit {
-  float t = std::numeric_limits<float>::infinity();
-  std::uint32_t mesh = 0;      // index into Scene::meshes
-  std::uint32_t triangle = 0;  // index into that mesh's triangles
-  bool valid() const { return t < std::numeric_limits<float>::infinity(); }
-};
+// The closest hit of a ray: the scene layer's record, which the ray-caster interface shares.
+using Hit = scene::RayHit;
 
 class EmbreeScene {
  public:
@@ -45,6 +42,10 @@ class EmbreeScene {
   std::unique_ptr<Impl> impl_;
   float ray_epsilon_ = 1e-4f;
 };
+
+// The scene::RayCaster the harness lends real-time techniques that trace rays on the CPU: an
+// EmbreeScene built for the scene it is given.
+scene::RayCasterFactory embreeRayCasterFactory();
 
 // The library version ("3.13.5"), recorded in outputs.
 std::string embreeVersion();

@@ -271,6 +271,7 @@ rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnviro
   settings.iterations = p.job->settings.iterationCount();
   settings.capture_after = p.job->settings.checkpoints;
   settings.context = env.gl;
+  settings.services.ray_caster = ref::embreeRayCasterFactory();
   return settings;
 }
 

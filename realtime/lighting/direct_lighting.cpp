@@ -4,6 +4,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
+#include <numbers>
+
 namespace gib::rt {
 
 namespace {
@@ -93,7 +96,7 @@ void DirectLighting::writeEmission(const GpuScene& scene, const GBuffer& gbuffer
 }
 
 void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>& views,
-                               gl::PassProfiler& profiler) {
+                               gl::PassProfiler& profiler, const AfterSample& after_sample) {
   auto lights = profiler.pass(kLightsPass);
   for (LightSample sample : samples_) {
     if (sample.kind == LightSampleKind::kPoint) sample.position += light_offset_;
@@ -106,9 +109,7 @@ void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>
       program.use();
       view.gbuffer->bindTextures();
       shadow_maps_->bindForLookup(program, sample);
-      glUniform3fv(program.uniform("u_light_intensity"), 1, glm::value_ptr(sample.intensity));
-      glUniform1f(program.uniform("u_cos_cone"), sample.cos_cone);
-      glUniform1f(program.uniform("u_exponent"), sample.exponent);
+      setLightSampleUniforms(program, sample);
       glUniform1i(program.uniform("u_normals_face_viewer"), view.normals_face_viewer ? 1 : 0);
       glDisable(GL_DEPTH_TEST);
       glEnable(GL_BLEND);
@@ -117,7 +118,16 @@ void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>
       shade.draw();
       glDisable(GL_BLEND);
     }
+    if (after_sample) after_sample(sample, *shadow_maps_);
   }
+}
+
+glm::vec3 movingLightOffset(const GpuScene& scene, const Frame& frame) {
+  if (frame.frames_left == 0) return glm::vec3(0.0f);
+  const float phase =
+      2.0f * std::numbers::pi_v<float> * float(frame.frames_left) / float(frame.frame_count);
+  const float radius = 0.05f * glm::length(scene.boundsMax() - scene.boundsMin());
+  return radius * glm::vec3(std::sin(phase), 0.0f, 1.0f - std::cos(phase));
 }
 
 }  // namespace gib::rt

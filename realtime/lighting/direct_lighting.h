@@ -12,7 +12,9 @@
 #include "realtime/lighting/shadow_maps.h"
 #include "realtime/pass_declarations.h"
 #include "realtime/render_target.h"
+#include "realtime/technique.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -54,12 +56,19 @@ class DirectLighting {
   // Writes what the camera sees of emitters and the sky into `target` (overwriting it).
   void writeEmission(const GpuScene& scene, const GBuffer& gbuffer, const RenderTarget& target,
                      gl::PassProfiler& profiler);
+  // What else reads a light sample's shadow map while it is current (light path maps weigh their
+  // entry points with it, book §8.4.1): called after the views are lit, the sample moved by the
+  // light offset.
+  using AfterSample = std::function<void(const LightSample&, const ShadowMaps&)>;
+
   // For each light sample: its shadow map, then its light added into every view (additive
-  // blending). Inside a pass named kLightsPass.
+  // blending), then `after_sample`. Inside a pass named kLightsPass.
   void addDirect(const GpuScene& scene, const std::vector<LitView>& views,
-                 gl::PassProfiler& profiler);
+                 gl::PassProfiler& profiler, const AfterSample& after_sample = {});
 
   std::size_t sampleCount() const { return samples_.size(); }
+  // The shadow maps addDirect draws (after prepare), for programs that read them in AfterSample.
+  const ShadowMaps& shadowMaps() const { return *shadow_maps_; }
   // Moves every point sample (area-light points, spot and point lights) by `offset` for the
   // next addDirect: a light that moves between frames. Zero restores the scene's lights.
   void setLightOffset(const glm::vec3& offset) { light_offset_ = offset; }
@@ -76,6 +85,11 @@ class DirectLighting {
   std::optional<ShadowMaps> shadow_maps_;
   gl::FullScreenPass emission_, shade_point_, shade_directional_;
 };
+
+// Where a light with motion=light is at this frame: it travels a circle of a twentieth of the
+// scene's extent once over the run and is back at rest (offset zero) on the last frame, so every
+// frame relights as for a moving light and the measured image is the scene's.
+glm::vec3 movingLightOffset(const GpuScene& scene, const Frame& frame);
 
 // The shadow-map parameters (filter, sizes, light samples) of every technique that adds direct
 // light with DirectLighting, and the settings they give.

@@ -5,6 +5,10 @@
 uniform vec3 u_light_intensity;
 uniform float u_cos_cone;
 uniform float u_exponent;
+// Added to the squared distance of a point sample: 0 for a light that is a point; a virtual light
+// that stands for a patch (light path maps) gives the patch's area over π, which keeps its
+// irradiance on a receiver beside it finite (the on-axis irradiance of a disk of that area).
+uniform float u_distance_squared_offset;
 
 // False outside a spot light's cone (no light at all).
 bool lightSampleIrradiance(vec3 p, out vec3 wi, out vec3 irradiance) {
@@ -15,7 +19,7 @@ bool lightSampleIrradiance(vec3 p, out vec3 wi, out vec3 irradiance) {
   float cos_axis = dot(-wi, u_light_axis);
   if (cos_axis < u_cos_cone) return false;
   float falloff = u_exponent == 0.0 ? 1.0 : pow(max(cos_axis, 0.0), u_exponent);
-  irradiance = u_light_intensity * (falloff / distance_squared);
+  irradiance = u_light_intensity * (falloff / (distance_squared + u_distance_squared_offset));
 #else
   wi = -u_light_axis;
   irradiance = u_light_intensity;

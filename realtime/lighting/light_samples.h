@@ -4,6 +4,7 @@
 // exact direct illumination, which is what makes `direct` comparable with the reference's LDE.
 #pragma once
 
+#include "realtime/gl/objects.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "scene/scene.h"
 
@@ -24,6 +25,9 @@ struct LightSample {
   scene::Rgb intensity{0.0f};
   float cos_cone = -1.0f;
   float exponent = 0.0f;
+  // Added to the squared distance (light_irradiance.glsl): 0 but for a virtual light that stands
+  // for a patch.
+  float distance_squared_offset = 0.0f;
 };
 
 // Spot and directional lights one sample each; `area_samples` points over all emissive triangles
@@ -33,6 +37,9 @@ struct LightSample {
 std::vector<LightSample> makeLightSamples(const scene::Scene& scene,
                                           const std::vector<EmitterTriangle>& emitters,
                                           int area_samples, int sky_samples, float lift);
+
+// Sets light_irradiance.glsl's uniforms of `sample` in `program` (which must be current).
+void setLightSampleUniforms(const gl::Program& program, const LightSample& sample);
 
 // Point i of an n-point Hammersley set in [0,1)²: (i + 0.5)/n and the base-2 radical inverse of i.
 glm::vec2 hammersley(std::uint32_t i, std::uint32_t n);

@@ -2,9 +2,8 @@
 // blending: f · (incident irradiance) · cosθ · visibility at each pixel's primary hit.
 #include "realtime/gpu_scene/scene.glsl"
 #include "realtime/gpu_scene/brdf.glsl"
-#include "realtime/lighting/shadow_lookup.glsl"
 #include "realtime/gbuffer/shaded_surface.glsl"
-#include "realtime/lighting/light_irradiance.glsl"
+#include "realtime/lighting/shadowed_irradiance.glsl"
 
 layout(location = 0) out vec4 o_radiance;
 
@@ -15,10 +14,8 @@ void main() {
   uint material = s.material;
 
   vec3 wi, irradiance;
-  if (!lightSampleIrradiance(p, wi, irradiance)) discard;
-  float cos_surface = dot(n, wi);
-  if (cos_surface <= 0.0) discard;
+  if (!shadowedIrradiance(p, n, wi, irradiance)) discard;
   vec3 f = evaluateBrdf(materialDiffuse(material), materialSpecular(material),
                         materialExponent(material), materialIsPhong(material), n, wo, wi);
-  o_radiance = vec4(f * irradiance * (cos_surface * lightVisibility(p, n)), 0.0);
+  o_radiance = vec4(f * irradiance, 0.0);
 }

@@ -8,6 +8,7 @@
 #include "realtime/lighting/lighting_shared.h"
 #include "realtime/sh/spherical_harmonics_shared.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
+#include "realtime/techniques/light_path_map/light_path_map_shared.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 #include "support/gl_test_context.h"
 
@@ -40,6 +41,7 @@ TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
       "realtime/lighting/lighting_shared.h",
       "realtime/sh/spherical_harmonics_shared.h",
       "realtime/techniques/irradiance_volume/irradiance_volume_shared.h",
+      "realtime/techniques/light_path_map/light_path_map_shared.h",
       "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"};
   const std::vector<std::string> embedded = sharedHeaders();
   EXPECT_EQ(std::set<std::string>(embedded.begin(), embedded.end()), included);
@@ -95,6 +97,9 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"kShootersBinding", kShootersBinding},
       {"kVisibilityUnit", kVisibilityUnit},
       {"kDescentGroupSize", kDescentGroupSize},
+      {"kSelectedPanesBinding", kSelectedPanesBinding},
+      {"kPanesUnit", kPanesUnit},
+      {"kIndirectUnit", kIndirectUnit},
       {"int(luminance(vec3(1.0, 0.0, 0.0)) * 1e4 + 0.5)", int(kLuminanceRed * 1e4 + 0.5)},
   };
   std::vector<std::string> expressions;
@@ -102,6 +107,25 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
   const std::vector<int> gpu_values = evaluateOnGpu(expressions);
   for (std::size_t i = 0; i < cases.size(); ++i)
     EXPECT_EQ(gpu_values[i], cases[i].second) << cases[i].first;
+}
+
+// A compute program of `source` (which may #include embedded files), for layout queries.
+gl::Program layoutProgram(const std::string& source) {
+  return gl::buildProgram({{GL_COMPUTE_SHADER, "test/layout.comp.glsl"}}, "",
+                          [&](std::string_view path) -> std::string_view {
+                            return path == "test/layout.comp.glsl" ? std::string_view(source)
+                                                                   : gl::glslFile(path);
+                          });
+}
+
+// One property (GL_OFFSET, GL_TOP_LEVEL_ARRAY_STRIDE) of a named resource of `program`.
+std::size_t resourceProperty(const gl::Program& program, GLenum interface, const char* name,
+                             GLenum what) {
+  const GLuint index = glGetProgramResourceIndex(program.id(), interface, name);
+  EXPECT_NE(index, GL_INVALID_INDEX) << name;
+  GLint value = -1;
+  glGetProgramResourceiv(program.id(), interface, index, 1, &what, 1, nullptr, &value);
+  return std::size_t(value);
 }
 
 // The offsets and array strides of the shared structs as the driver lays them out (std430
@@ -116,17 +140,9 @@ TEST_F(SharedHeaders, SharedStructsHaveTheCppLayoutInTheDriver) {
       "  shooters[0].u = materials[0].emission.x + camera.position.x + camera.image_size.y;\n"
       "  shooters[1].power = materials[1].specular_exponent.w;\n"
       "}\n";
-  const gl::Program program = gl::buildProgram(
-      {{GL_COMPUTE_SHADER, "test/layout.comp.glsl"}}, "",
-      [&](std::string_view path) -> std::string_view {
-        return path == "test/layout.comp.glsl" ? std::string_view(source) : gl::glslFile(path);
-      });
+  const gl::Program program = layoutProgram(source);
   auto property = [&](GLenum interface, const char* name, GLenum what) {
-    const GLuint index = glGetProgramResourceIndex(program.id(), interface, name);
-    EXPECT_NE(index, GL_INVALID_INDEX) << name;
-    GLint value = -1;
-    glGetProgramResourceiv(program.id(), interface, index, 1, &what, 1, nullptr, &value);
-    return std::size_t(value);
+    return resourceProperty(program, interface, name, what);
   };
   EXPECT_EQ(property(GL_BUFFER_VARIABLE, "shooters[0].u", GL_OFFSET), offsetof(gpu::Shooter, u));
   EXPECT_EQ(property(GL_BUFFER_VARIABLE, "shooters[0].power", GL_TOP_LEVEL_ARRAY_STRIDE),
@@ -139,6 +155,22 @@ TEST_F(SharedHeaders, SharedStructsHaveTheCppLayoutInTheDriver) {
   EXPECT_EQ(property(GL_UNIFORM, "camera.position", GL_OFFSET), offsetof(gpu::Camera, position));
   EXPECT_EQ(property(GL_UNIFORM, "camera.image_size", GL_OFFSET),
             offsetof(gpu::Camera, image_size));
+}
+
+// The light path map's selected panes (its own binding, so a program of its own).
+TEST_F(SharedHeaders, SelectedPaneHasTheCppLayoutInTheDriver) {
+  const gl::Program program = layoutProgram(
+      "#include \"realtime/techniques/light_path_map/light_path_map_shared.h\"\n"
+      "layout(std430, binding = kSelectedPanesBinding) buffer SelectedPanes {\n"
+      "  SelectedPane selected[];\n"
+      "};\n"
+      "layout(local_size_x = 1) in;\n"
+      "void main() { selected[0].layer = int(selected[1].weight.x); }\n");
+  EXPECT_EQ(resourceProperty(program, GL_BUFFER_VARIABLE, "selected[0].layer", GL_OFFSET),
+            offsetof(gpu::SelectedPane, layer));
+  EXPECT_EQ(resourceProperty(program, GL_BUFFER_VARIABLE, "selected[0].weight",
+                             GL_TOP_LEVEL_ARRAY_STRIDE),
+            sizeof(gpu::SelectedPane));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
+#include "support/form_factor.h"
 #include "support/gl_test_context.h"
 
 #include <gtest/gtest.h>
@@ -20,40 +21,18 @@
 namespace gib::rt {
 namespace {
 
+using test::pointToPolygonFormFactor;
+
 // Two parallel unit squares one unit apart, face to face: the top one emits L^e = 1 downwards and
 // reflects nothing, the bottom one reflects ρ = 0.5 and emits nothing.
 constexpr float kAlbedo = 0.5f;
 scene::Scene twoPatches() {
-  scene::Scene s;
-  s.name = "two_patches";
-  s.camera.position = {0.5f, 0.5f, -3.0f};
-  s.camera.look_at = {0.5f, 0.5f, 0.5f};
   scene::Material emitter, receiver;
   emitter.name = "emitter";
   emitter.emission = scene::Rgb(1.0f);
   receiver.name = "receiver";
   receiver.diffuse = scene::Rgb(kAlbedo);
-  s.materials = {emitter, receiver};
-  scene::Mesh top, bottom;
-  top.material = 0;
-  bottom.material = 1;
-  scene::appendQuad(top, {0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1});     // normal −y
-  scene::appendQuad(bottom, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0});  // normal +y
-  s.meshes = {top, bottom};
-  return s;
-}
-
-// Lambert's formula: the form factor from a differential area at x (normal n) to a polygon.
-double pointToPolygonFormFactor(const glm::dvec3& x, const glm::dvec3& n,
-                                const std::vector<glm::dvec3>& polygon) {
-  double sum = 0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::dvec3 a = glm::normalize(polygon[i] - x);
-    const glm::dvec3 b = glm::normalize(polygon[(i + 1) % polygon.size()] - x);
-    const double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
-    sum += angle * glm::dot(n, glm::normalize(glm::cross(a, b)));
-  }
-  return std::abs(sum) / (2 * std::numbers::pi);
+  return test::facingUnitSquares(emitter, receiver);
 }
 
 // The area-to-area form factor of two directly opposed parallel unit squares one apart (Howell's

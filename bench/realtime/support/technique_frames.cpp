@@ -58,14 +58,16 @@ void benchmarkTechniqueIterations(benchmark::State& state, const std::string& te
 
 void benchmarkTechniqueFrames(benchmark::State& state, const std::string& technique_name,
                               const std::vector<std::string>& set, const std::string& scene_name,
-                              int size) {
+                              int size, int width, const TechniqueServices& services) {
   gl::Context& context = benchContext();
   context.makeCurrent();
   const scene::Scene scene = scene::loadScene(scene_name, {});
   std::unique_ptr<Technique> technique = createTechnique(technique_name, set);
-  GpuScene gpu_scene(scene, size, size);
-  technique->prepare(gpu_scene, size, size);
-  RenderTarget target(size, size);
+  const int w = width > 0 ? width : size;
+  GpuScene gpu_scene(scene, w, size);
+  technique->provide(services);
+  technique->prepare(gpu_scene, w, size);
+  RenderTarget target(w, size);
   gl::PassProfiler profiler(context.identity().software);
   // An endless run: an animating technique keeps animating (frames_left never reaches 0).
   Frame frame{target, profiler, 1 << 30, 1 << 30};

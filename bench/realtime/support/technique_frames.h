@@ -4,6 +4,8 @@
 // glFinish on llvmpipe, GPU timestamps on a GPU), and the label names the renderer.
 #pragma once
 
+#include "realtime/technique.h"
+
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -11,9 +13,11 @@
 
 namespace gib::rt {
 
+// The image is `size` pixels square, or width × size with `width` given; `services` is what the
+// harness would lend (TechniqueServices: a ray caster for CPU preprocessing).
 void benchmarkTechniqueFrames(benchmark::State& state, const std::string& technique,
                               const std::vector<std::string>& set, const std::string& scene,
-                              int size);
+                              int size, int width = 0, const TechniqueServices& services = {});
 
 // The same for one iteration of an iterative technique (Technique::step) per benchmark iteration,
 // after `warmup_iterations`; counters "<pass>_ms" are the medians of the iteration's passes.

@@ -9,9 +9,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <cmath>
 #include <functional>
-#include <numbers>
 
 namespace gib::rt {
 
@@ -136,15 +134,8 @@ void IrradianceVolumeTechnique::bounce(gl::PassProfiler& profiler,
   }
 }
 
-// With motion=light the light travels a circle of a twentieth of the scene's extent, once over
-// the run, and is back at rest on the last frame: every frame relights, reprojects and shades as
-// for a moving light, and the measured image is the scene's.
 glm::vec3 IrradianceVolumeTechnique::lightOffset(const Frame& frame) const {
-  if (rasterise_every_frame_ || frame.frames_left == 0) return glm::vec3(0.0f);
-  const float phase =
-      2.0f * std::numbers::pi_v<float> * float(frame.frames_left) / float(frame.frame_count);
-  const float radius = 0.05f * glm::length(scene_->boundsMax() - scene_->boundsMin());
-  return radius * glm::vec3(std::sin(phase), 0.0f, 1.0f - std::cos(phase));
+  return rasterise_every_frame_ ? glm::vec3(0.0f) : movingLightOffset(*scene_, frame);
 }
 
 void IrradianceVolumeTechnique::render(Frame& frame) {

@@ -5,8 +5,6 @@
 #include "realtime/lighting/light_samples.h"
 #include "realtime/lighting/shadow_maps.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 namespace gib::rt {
 
 int injectDirectLight(const GpuScene& scene, const atlas::AtlasTextures& atlas,
@@ -19,8 +17,7 @@ int injectDirectLight(const GpuScene& scene, const atlas::AtlasTextures& atlas,
   settings.size = 1024;  // once per run, so a fine map costs little
   ShadowMaps shadow_maps(settings, scene);
   auto injection = [&](LightSampleKind kind) {
-    gl::FullScreenPass pass("realtime/techniques/stochastic_radiosity/inject_light.frag.glsl",
-                            shadow_maps.defines(kind));
+    gl::FullScreenPass pass("realtime/atlas/atlas_light.frag.glsl", shadow_maps.defines(kind));
     shadow_maps.setLookupConstants(pass.program());
     return pass;
   };
@@ -35,9 +32,7 @@ int injectDirectLight(const GpuScene& scene, const atlas::AtlasTextures& atlas,
     const gl::Program& p = pass.program();
     p.use();
     shadow_maps.bindForLookup(p, sample);
-    glUniform3fv(p.uniform("u_light_intensity"), 1, glm::value_ptr(sample.intensity));
-    glUniform1f(p.uniform("u_cos_cone"), sample.cos_cone);
-    glUniform1f(p.uniform("u_exponent"), sample.exponent);
+    setLightSampleUniforms(p, sample);
     atlas.bind();
     source.bind();
     glViewport(0, 0, atlas.resolution(), atlas.resolution());

@@ -1,8 +1,9 @@
 // First-bounce injection for scenes lit by spot and directional lights (the chamber): their
 // direct light, reflected by every atlas texel, computed once with `direct`'s shadow maps and
-// added into the source map, which shooting treats as emission (inject_light.frag.glsl). Area
-// lights need none: their emissive triangles are atlas texels with emission, the paper's setting.
-// The sky is not injected (the technique leaves it out; `gibench list techniques` says so).
+// added into the source map, which shooting treats as emission
+// (realtime/atlas/atlas_light.frag.glsl). Area lights need none: their emissive triangles are atlas
+// texels with emission, the paper's setting. The sky is not injected (the technique leaves it out;
+// `gibench list techniques` says so).
 #pragma once
 
 #include "realtime/atlas/atlas_textures.h"

@@ -87,7 +87,7 @@ void StochasticRadiosityTechnique::prepare(const GpuScene& scene, int /*width*/,
                          ? 1.0f / (layout_.texels_per_unit * layout_.texels_per_unit)
                          : 0.0f);
   view_program_ = gl::buildProgram(
-      {{GL_VERTEX_SHADER, "realtime/techniques/stochastic_radiosity/view.vert.glsl"},
+      {{GL_VERTEX_SHADER, "realtime/atlas/atlas_view.vert.glsl"},
        {GL_FRAGMENT_SHADER, "realtime/techniques/stochastic_radiosity/view.frag.glsl"}});
 
   // Step 4: the power of the initial estimate (emission and injected light alone): an update

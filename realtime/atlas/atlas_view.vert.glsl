@@ -1,4 +1,5 @@
-// The camera image (Barsi & Jakab §3.3): the scene with its atlas coordinates.
+// A camera view of the atlas techniques (the radiosity estimate, the light path maps' indirect
+// light; Barsi & Jakab §3.3): the scene with its atlas coordinates, for bilinear atlas lookups.
 #include "realtime/gpu_scene/scene.glsl"
 #include "realtime/atlas/atlas_vertex.glsl"
 
