@@ -115,6 +115,27 @@ TEST(LightPathMapEntryPoints, ClustersAreEquallyLargeAndCompact) {
   }
 }
 
+// K-means from the kd-tree's clusters never raises the sum of squared distances to the cluster
+// means (Lloyd's iterations), here over the Cornell box's entry points, where the kd-tree's
+// boxes straddle the box's corners; every index is a cluster; the same every call.
+TEST(LightPathMapEntryPoints, KMeansLowersTheClusteringCostAndIsDeterministic) {
+  const std::vector<atlas::AtlasTriangle> triangles =
+      atlas::atlasTriangles(scene::loadScene("cornell", {}));
+  const std::vector<lpm::EntryPoint> points = lpm::sampleEntryPoints(triangles, 1024, 5);
+  const std::vector<int> kdtree = lpm::clusterEntryPoints(points, 32);
+  const std::vector<int> kmeans = lpm::clusterEntryPointsKMeans(points, 32, 20);
+  const double kdtree_cost = lpm::clusteringCost(points, kdtree, 32);
+  const double kmeans_cost = lpm::clusteringCost(points, kmeans, 32);
+  std::printf("clustering cost: kd-tree %.3f, K-means %.3f\n", kdtree_cost, kmeans_cost);
+  EXPECT_LT(kmeans_cost, kdtree_cost);
+  for (int c : kmeans) {
+    EXPECT_GE(c, 0);
+    EXPECT_LT(c, 32);
+  }
+  EXPECT_EQ(kmeans, lpm::clusterEntryPointsKMeans(points, 32, 20));
+  EXPECT_EQ(lpm::clusterEntryPointsKMeans(points, 32, 0), kdtree);  // no iteration: the start
+}
+
 // Russian roulette with continuation 𝓛(albedo): in a closed grey box of albedo 0.5 a walk visits
 // 1/(1 − 0.5) = 2 points on average (geometric; variance 2 per walk). Over 2 × 10 000 walks the
 // mean's standard deviation is 0.01; the tolerance 0.04 is four (99.99%). Every light's intensity

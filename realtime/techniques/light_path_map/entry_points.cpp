@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
 
@@ -76,6 +77,48 @@ void splitNode(const std::vector<EntryPoint>& points, std::vector<int>& indices,
   splitNode(points, indices, begin, middle, first_cluster, left_clusters, cluster_of);
   splitNode(points, indices, middle, end, first_cluster + left_clusters, clusters - left_clusters,
             cluster_of);
+}
+
+// A point in the K-means space: position and the normal scaled by `normal_scale`.
+struct Feature {
+  glm::vec3 p{0.0f}, n{0.0f};
+};
+
+float normalScale(const std::vector<EntryPoint>& points) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const EntryPoint& e : points) {
+    lo = glm::min(lo, e.position);
+    hi = glm::max(hi, e.position);
+  }
+  return points.empty() ? 0.0f : 0.1f * glm::length(hi - lo);
+}
+
+float squaredDistance(const Feature& a, const Feature& b) {
+  const glm::vec3 dp = a.p - b.p, dn = a.n - b.n;
+  return glm::dot(dp, dp) + glm::dot(dn, dn);
+}
+
+std::vector<Feature> features(const std::vector<EntryPoint>& points) {
+  const float scale = normalScale(points);
+  std::vector<Feature> f(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    f[i] = {points[i].position, scale * points[i].normal};
+  return f;
+}
+
+// Each cluster's mean feature; a cluster without members keeps `centroids[c]`.
+void moveCentroids(const std::vector<Feature>& f, const std::vector<int>& cluster_of,
+                   std::vector<Feature>& centroids) {
+  std::vector<Feature> sum(centroids.size());
+  std::vector<int> count(centroids.size(), 0);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const std::size_t c = std::size_t(cluster_of[i]);
+    sum[c].p += f[i].p;
+    sum[c].n += f[i].n;
+    ++count[c];
+  }
+  for (std::size_t c = 0; c < centroids.size(); ++c)
+    if (count[c] > 0) centroids[c] = {sum[c].p / float(count[c]), sum[c].n / float(count[c])};
 }
 
 }  // namespace
@@ -168,6 +211,44 @@ LightWalks traceLightWalks(const scene::RayCaster& caster, const scene::Scene& s
     }
   }
   return walks;
+}
+
+std::vector<int> clusterEntryPointsKMeans(const std::vector<EntryPoint>& points, int clusters,
+                                          int iterations) {
+  std::vector<int> cluster_of = clusterEntryPoints(points, clusters);
+  const std::vector<Feature> f = features(points);
+  auto centroids = std::vector<Feature>(std::size_t(clusters));
+  moveCentroids(f, cluster_of, centroids);
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    bool changed = false;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      int best = cluster_of[i];
+      float best_distance = squaredDistance(f[i], centroids[std::size_t(best)]);
+      for (int c = 0; c < clusters; ++c) {
+        const float d = squaredDistance(f[i], centroids[std::size_t(c)]);
+        if (d < best_distance || (d == best_distance && c < best)) {
+          best = c;
+          best_distance = d;
+        }
+      }
+      changed |= best != cluster_of[i];
+      cluster_of[i] = best;
+    }
+    moveCentroids(f, cluster_of, centroids);
+    if (!changed) break;
+  }
+  return cluster_of;
+}
+
+double clusteringCost(const std::vector<EntryPoint>& points, const std::vector<int>& cluster_of,
+                      int clusters) {
+  const std::vector<Feature> f = features(points);
+  auto centroids = std::vector<Feature>(std::size_t(clusters));
+  moveCentroids(f, cluster_of, centroids);
+  double cost = 0;
+  for (std::size_t i = 0; i < f.size(); ++i)
+    cost += squaredDistance(f[i], centroids[std::size_t(cluster_of[i])]);
+  return cost;
 }
 
 }  // namespace gib::rt::lpm

@@ -34,6 +34,20 @@ std::vector<EntryPoint> sampleEntryPoints(const std::vector<atlas::AtlasTriangle
 // Requires 1 ≤ clusters ≤ points.size().
 std::vector<int> clusterEntryPoints(const std::vector<EntryPoint>& points, int clusters);
 
+// K-means (the book's alternative): Lloyd's iterations from the kd-tree's clusters, in the space
+// of position and normal, |Δp|² + (s·|Δn|)² with s a tenth of the points' bounding-box diagonal,
+// so that points on differently facing surfaces (either side of a corner) part. Each iteration
+// assigns every point to its nearest centroid (ties to the lower index) and moves the centroids
+// to their members' means; a cluster that loses every member keeps its centroid. The sum of
+// squared distances never grows. Deterministic.
+std::vector<int> clusterEntryPointsKMeans(const std::vector<EntryPoint>& points, int clusters,
+                                          int iterations);
+
+// The sum over points of the squared distance (the metric above) to their cluster's mean: what
+// K-means lowers.
+double clusteringCost(const std::vector<EntryPoint>& points, const std::vector<int>& cluster_of,
+                      int clusters);
+
 // A visited point of a random walk as a virtual spot light with intensity
 // I(θ) = intensity · cos θ about `normal` (the book's S·Π f/𝓛(f) · f · cos θ, times the share of
 // its entry point's paths it stands for).

@@ -26,6 +26,7 @@ LightPathMapSettings settingsFrom(const ParameterValues& p) {
   s.entry_points = p.integer("entry_points");
   s.paths_per_entry = p.integer("paths_per_entry");
   s.clusters = p.integer("clusters");
+  s.kmeans = p.text("clustering") == "kmeans";
   s.panes_used = p.integer("panes_used");
   s.atlas_resolution = std::stoi(p.text("atlas"));
   s.vpl_shadow_map_size = p.integer("vpl_shadow_map_size");
@@ -49,6 +50,9 @@ void checkSettings(const LightPathMapSettings& s) {
         "cluster count",
         s.panes_used, s.clusters));
 }
+
+// Lloyd's iterations of clustering=kmeans, at most (it stops when no point moves).
+constexpr int kKMeansIterations = 20;
 
 double luminanceOf(const glm::vec3& c) {
   return kLuminanceRed * c.r + kLuminanceGreen * c.g + kLuminanceBlue * c.b;
@@ -115,7 +119,9 @@ void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height
   double total_area = 0;
   for (const atlas::AtlasTriangle& t : triangles_) total_area += t.area;
   entries_ = lpm::sampleEntryPoints(triangles_, settings_.entry_points, settings_.seed);
-  cluster_of_entry_ = lpm::clusterEntryPoints(entries_, settings_.clusters);
+  cluster_of_entry_ = settings_.kmeans ? lpm::clusterEntryPointsKMeans(entries_, settings_.clusters,
+                                                                       kKMeansIterations)
+                                       : lpm::clusterEntryPoints(entries_, settings_.clusters);
   const lpm::LightWalks walks = lpm::traceLightWalks(
       *caster, scene.scene(), triangles_, entries_, cluster_of_entry_, settings_.paths_per_entry,
       total_area, settings_.seed, settings_.max_walk_vertices);
@@ -450,6 +456,9 @@ TechniqueInfo lightPathMapTechniqueInfo() {
       numericParameter("clusters", ParameterType::kInteger, "256", 1, 2048, "",
                        "entry-point clusters by object-median kd-tree, one pane each (the book's "
                        "256); at most entry_points"),
+      choiceParameter("clustering", "kdtree", {"kdtree", "kmeans"},
+                      "entry-point clusters: object-median kd-tree (equal sizes), or K-means from "
+                      "it over position and normal (the book's alternative)"),
       numericParameter("panes_used", ParameterType::kInteger, "32", 1, 2048, "",
                        "highest-weighted cluster panes summed per frame (the book's 32); at most "
                        "clusters"),

@@ -38,6 +38,7 @@ struct LightPathMapSettings {
   int entry_points = 4096;
   int paths_per_entry = 2;
   int clusters = 256;
+  bool kmeans = false;  // clustering=kmeans: Lloyd's iterations from the kd-tree's clusters
   int panes_used = 32;
   int atlas_resolution = 256;
   int vpl_shadow_map_size = 256;
