@@ -14,6 +14,7 @@
 #include "scene/mesh_builder.h"
 #include "support/form_factor.h"
 #include "support/gl_test_context.h"
+#include "support/render_statistics.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -25,6 +26,7 @@
 namespace gib::rt {
 namespace {
 
+using test::imageMean;
 using test::pointToPolygonFormFactor;
 
 constexpr double kPi = std::numbers::pi;
@@ -335,12 +337,6 @@ TechniqueRunResult runCornell(const std::vector<std::string>& set) {
   const TechniqueInfo& info = findTechnique("light_path_map");
   return runTechnique(scene::loadScene("cornell", {}), info,
                       parseParameters(info.parameters, set, "technique"), smallRun());
-}
-
-double imageMean(const image::Image& image) {
-  double sum = 0;
-  for (float v : image.data()) sum += v;
-  return sum / double(image.data().size());
 }
 
 // Without clustering (a pane per entry point, all used) the maps' own image (output=indirect,

@@ -17,6 +17,9 @@ struct ImageMean {
 // equal and an upper bound otherwise.
 ImageMean imageMean(const ref::RenderResult& render);
 
+// The mean over all pixels of the channels' average of an RGB image.
+double imageMean(const image::Image& image);
+
 // The bound on |value − truth| / standard error that all of `tests` values keep with probability
 // 1 − family_significance (Šidák), under Student's t with the render's degrees of freedom.
 double familyWiseBound(const ref::RenderResult& render, double tests, double family_significance);

@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "common/luminance_shared.h"
+#include "realtime/atlas/atlas_lighting.h"
 #include "realtime/gl/finished_time.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
@@ -172,11 +173,7 @@ void LightPathMapTechnique::buildPanes(const lpm::LightWalks& walks) {
   ShadowSettings shadow;
   shadow.filter = ShadowFilter::kHard;
   shadow.size = settings_.vpl_shadow_map_size;
-  ShadowMaps shadow_maps(shadow, *scene_);
-  const gl::FullScreenPass light("realtime/atlas/atlas_light.frag.glsl",
-                                 shadow_maps.defines(LightSampleKind::kPoint));
-  shadow_maps.setLookupConstants(light.program());
-  gl::PassProfiler unmeasured;  // prepare() is timed as a whole
+  atlas::AtlasLighting lighting(shadow, *scene_);
   // A virtual light stands for the patch around its point, about a texel of the atlas: its light
   // on a texel beside it is that of a disk of a texel's area (light_irradiance.glsl).
   const float distance_offset = texel_side_ * texel_side_ * std::numbers::inv_pi_v<float>;
@@ -195,20 +192,7 @@ void LightPathMapTechnique::buildPanes(const lpm::LightWalks& walks) {
       sample.cos_cone = 0.0f;
       sample.exponent = 1.0f;
       sample.distance_squared_offset = distance_offset;
-      shadow_maps.render(*scene_, sample, unmeasured);
-      glDisable(GL_POLYGON_OFFSET_FILL);
-      glDisable(GL_DEPTH_TEST);
-      const gl::Program& program = light.program();
-      program.use();
-      shadow_maps.bindForLookup(program, sample);
-      setLightSampleUniforms(program, sample);
-      atlas_->bind();
-      sum_framebuffer.bind();
-      glViewport(0, 0, r, r);
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);
-      light.draw();
-      glDisable(GL_BLEND);
+      lighting.add(*scene_, sample, *atlas_, sum_framebuffer);
     }
     pane_framebuffer.attachColor(0, panes_, 0, c);
     glBlitNamedFramebuffer(sum_framebuffer.id(), pane_framebuffer.id(), 0, 0, r, r, 0, 0, r, r,
