@@ -89,6 +89,7 @@ PassTimings summarizeProfile(const rt::ProfileRecord& record) {
     checkSeries(pass, "cpu_ms", pass.cpu_ms.size(), frames, true);
     checkSeries(pass, record.reported_clock + "_ms", record.reported(pass).size(), frames, false);
     checkSeries(pass, "calls", pass.calls.size(), frames, false);
+    checkSeries(pass, "gpu_commands", pass.gpu_commands.size(), frames, true);
     PassTiming row;
     row.name = pass.name;
     row.path = pass.path;
@@ -99,6 +100,10 @@ PassTimings summarizeProfile(const rt::ProfileRecord& record) {
     row.share = frame_total > 0 ? sum(record.reported(pass)) / frame_total : 0.0;
     row.calls_per_frame =
         double(std::accumulate(pass.calls.begin(), pass.calls.end(), 0L)) / double(frames);
+    if (!pass.gpu_commands.empty())
+      row.gpu_commands_per_frame =
+          double(std::accumulate(pass.gpu_commands.begin(), pass.gpu_commands.end(), 0L)) /
+          double(frames);
     row.gpu_ms = pass.gpu_ms;
     row.cpu_ms = pass.cpu_ms;
     timings.passes.push_back(std::move(row));
@@ -134,8 +139,8 @@ std::string formatPassTable(const PassTimings& timings) {
   std::string out =
       fmt::format("Per-pass times in ms per frame, {}; {} warm-up and {} measured frames\n",
                   timings.clockDescription(), timings.warmup_frames, timings.measured_frames);
-  out += fmt::format("{:<{}}  {:>9} {:>9} {:>9} {:>9} {:>9} {:>7} {:>6}", "pass", name_width,
-                     "median", "q1", "q3", "min", "max", "share", "calls");
+  out += fmt::format("{:<{}}  {:>9} {:>9} {:>9} {:>9} {:>9} {:>7} {:>6} {:>6}", "pass", name_width,
+                     "median", "q1", "q3", "min", "max", "share", "calls", "draws");
   if (both) out += fmt::format(" {:>11}", other + " median");
   out += '\n';
   double outside = 1.0;
@@ -146,6 +151,8 @@ std::string formatPassTable(const PassTimings& timings) {
     out += fmt::format("{:<{}}  {:9.3f} {:9.3f} {:9.3f} {:9.3f} {:9.3f} {:6.1f}% {:>6.3g}",
                        indented, name_width, s.median, s.first_quartile, s.third_quartile,
                        s.minimum, s.maximum, 100.0 * pass.share, pass.calls_per_frame);
+    out += pass.gpu_commands_per_frame ? fmt::format(" {:>6.4g}", *pass.gpu_commands_per_frame)
+                                       : fmt::format(" {:>6}", "-");
     if (both) {
       const std::optional<double>& o = medianOf(pass, other);
       out += o ? fmt::format(" {:11.3f}", *o) : fmt::format(" {:>11}", "-");

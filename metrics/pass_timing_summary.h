@@ -25,6 +25,9 @@ struct PassTiming {
   // the reported clock (a ratio of totals, not a median of ratios, so shares of siblings add up).
   double share = 0;
   double calls_per_frame = 0;  // mean entries per measured frame
+  // Mean draws and compute dispatches per measured frame, inner passes' included; nullopt for a
+  // record made before they were counted.
+  std::optional<double> gpu_commands_per_frame;
   // Per measured frame, so that a later run can be compared with a rank test; empty for a clock
   // the record does not have.
   std::vector<double> gpu_ms, cpu_ms;
@@ -61,9 +64,10 @@ struct PassTimings {
 PassTimings summarizeProfile(const rt::ProfileRecord& record);
 
 // A table for people: pass names indented by depth, median, quartiles, minimum and maximum in
-// ms, share of the frame, calls per frame, and the other clock's median where the record has
-// both; a header naming the reported clock and the frame counts, and a footer with the frame rate
-// of the median frame and the share of the frame outside every pass.
+// ms, share of the frame, calls and GPU commands (draws, dispatches) per frame, and the other
+// clock's median where the record has both; a header naming the reported clock and the frame
+// counts, and a footer with the frame rate of the median frame and the share of the frame outside
+// every pass.
 std::string formatPassTable(const PassTimings& timings);
 
 }  // namespace gib::metrics

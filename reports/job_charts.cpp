@@ -45,13 +45,16 @@ std::string passTable(const metrics::PassTimings& timings, std::string_view unit
                    {"first quartile", true},
                    {"third quartile", true},
                    {fmt::format("share of {}", unit), true},
-                   {fmt::format("calls per {}", unit), true}});
+                   {fmt::format("calls per {}", unit), true},
+                   {fmt::format("GPU commands per {}", unit), true}});
   for (const metrics::PassTiming& pass : timings.passes)
     table.addRow({fmt::format("<span style=\"padding-left:{}em\">{}</span>",
                               1.2 * std::max(0, pass.depth), escapeHtml(pass.name)),
                   formatNumber(pass.reported.median), formatNumber(pass.reported.first_quartile),
                   formatNumber(pass.reported.third_quartile), formatShare(pass.share),
-                  formatNumber(pass.calls_per_frame, 3)});
+                  formatNumber(pass.calls_per_frame, 3),
+                  pass.gpu_commands_per_frame ? formatNumber(*pass.gpu_commands_per_frame, 4)
+                                              : std::string("—")});
   return table.html();
 }
 

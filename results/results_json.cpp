@@ -320,6 +320,7 @@ metrics::PassTimings readPassTimings(const JsonField& f) {
     s.median_absolute_deviation = p.at("mad_ms").asNumber();
     pass.gpu_median_ms = readOptionalNumber(p, "gpu_median_ms");
     pass.cpu_median_ms = readOptionalNumber(p, "cpu_median_ms");
+    pass.gpu_commands_per_frame = readOptionalNumber(p, "gpu_commands_per_frame");
     pass.gpu_ms = readNumbers(p.at("gpu_ms"));
     pass.cpu_ms = readNumbers(p.at("cpu_ms"));
     s.count = timings.reportedSamples(pass).size();
@@ -427,6 +428,7 @@ json passTimingsToJson(const metrics::PassTimings& t) {
                       {"cpu_median_ms", optionalNumber(p.cpu_median_ms)},
                       {"share", numberToJson(p.share)},
                       {"calls_per_frame", numberToJson(p.calls_per_frame)},
+                      {"gpu_commands_per_frame", optionalNumber(p.gpu_commands_per_frame)},
                       {"gpu_ms", p.gpu_ms},
                       {"cpu_ms", p.cpu_ms}});
   }

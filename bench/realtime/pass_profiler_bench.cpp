@@ -102,8 +102,8 @@ rt::ProfileRecord syntheticProfile() {
   for (const char* path : paths) {
     const std::string p = path;
     rt::PassRecord pass{
-        p.substr(p.rfind('/') + 1),  p, int(std::count(p.begin(), p.end(), '/')), {}, {},
-        std::vector<int>(kFrames, 1)};
+        p.substr(p.rfind('/') + 1),   p, int(std::count(p.begin(), p.end(), '/')), {}, {},
+        std::vector<int>(kFrames, 1), {}};
     for (int f = 0; f < kFrames; ++f) {
       pass.gpu_ms.push_back(ms(random));
       pass.cpu_ms.push_back(ms(random));

@@ -1,5 +1,6 @@
 #include "realtime/atlas/atlas_mesh.h"
 
+#include "realtime/gl/gpu_commands.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 
 #include <cstddef>
@@ -65,7 +66,7 @@ AtlasMesh::AtlasMesh(const std::vector<AtlasTriangle>& triangles, const AtlasLay
 void AtlasMesh::draw() const {
   if (vertex_count_ == 0) return;
   vertex_array_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
+  gl::drawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
 }
 
 }  // namespace gib::rt::atlas

@@ -1,5 +1,6 @@
 #include "realtime/gl/fullscreen_pass.h"
 
+#include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/shader_library.h"
 
 #include <string>
@@ -14,7 +15,7 @@ FullScreenPass::FullScreenPass(std::string_view fragment_path, std::string_view 
 void FullScreenPass::draw() const {
   program_.use();
   empty_vertex_array_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawArrays(GL_TRIANGLES, 0, 3);
 }
 
 }  // namespace gib::rt::gl

@@ -1,5 +1,7 @@
 #include "realtime/gl/pass_profiler.h"
 
+#include "realtime/gl/gpu_commands.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -15,7 +17,7 @@ PassProfiler::PassProfiler(bool precise, int latency, std::string_view root_name
   record_.precise = precise;
   record_.reported_clock = precise ? "cpu" : "gpu";
   record_.passes.push_back(
-      PassRecord{std::string(root_name), std::string(root_name), 0, {}, {}, {}});
+      PassRecord{std::string(root_name), std::string(root_name), 0, {}, {}, {}, {}});
   parents_.push_back(0);
 }
 
@@ -39,14 +41,14 @@ std::size_t PassProfiler::findOrAddPass(std::string_view name, std::size_t paren
   for (std::size_t i = 1; i < record_.passes.size(); ++i)
     if (parents_[i] == parent && record_.passes[i].name == name) return i;
   const PassRecord& up = record_.passes[parent];
-  record_.passes.push_back(
-      PassRecord{std::string(name), fmt::format("{}/{}", up.path, name), up.depth + 1, {}, {}, {}});
+  record_.passes.push_back(PassRecord{
+      std::string(name), fmt::format("{}/{}", up.path, name), up.depth + 1, {}, {}, {}, {}});
   parents_.push_back(parent);
   return record_.passes.size() - 1;
 }
 
 std::size_t PassProfiler::open(std::size_t pass) {
-  Entry entry{pass, takeQuery(), takeQuery(), {}, {}};
+  Entry entry{pass, takeQuery(), takeQuery(), {}, {}, gpuCommandsIssued(), 0};
   if (precise_) glFinish();
   entry.cpu_begin = Clock::now();
   glQueryCounter(entry.begin.id(), GL_TIMESTAMP);
@@ -58,6 +60,7 @@ std::size_t PassProfiler::open(std::size_t pass) {
 void PassProfiler::close(std::size_t index) noexcept {
   Entry& entry = current_.entries[index];
   glQueryCounter(entry.end.id(), GL_TIMESTAMP);
+  entry.commands_end = gpuCommandsIssued();
   if (precise_) glFinish();
   entry.cpu_end = Clock::now();
   // Called from a destructor, so a pass ending before one opened inside it cannot throw here:
@@ -124,8 +127,9 @@ void PassProfiler::collect(Frame& frame) {
   // Sum repeated entries of a pass; passes absent from this frame get zero.
   const std::size_t passes = record_.passes.size();
   std::vector<double> gpu(passes, 0.0), cpu(passes, 0.0);
-  std::vector<int> calls(passes, 0);
+  std::vector<int> calls(passes, 0), commands(passes, 0);
   for (const Entry& entry : frame.entries) {
+    commands[entry.pass] += int(entry.commands_end - entry.commands_begin);
     const std::uint64_t begin = entry.begin.result(), end = entry.end.result();
     gpu[entry.pass] += end > begin ? double(end - begin) * 1e-6 : 0.0;
     cpu[entry.pass] +=
@@ -139,6 +143,8 @@ void PassProfiler::collect(Frame& frame) {
     pass.gpu_ms.push_back(gpu[p]);
     pass.calls.resize(earlier, 0);
     pass.calls.push_back(calls[p]);
+    pass.gpu_commands.resize(earlier, 0);
+    pass.gpu_commands.push_back(commands[p]);
     if (precise_) {  // without precise mode there is no CPU clock to keep
       pass.cpu_ms.resize(earlier, 0.0);
       pass.cpu_ms.push_back(cpu[p]);

@@ -18,6 +18,7 @@
 #include "realtime/gl/pass_record.h"
 
 #include <chrono>
+#include <cstdint>
 #include <deque>
 #include <string>
 #include <string_view>
@@ -73,6 +74,7 @@ class PassProfiler {
     std::size_t pass;  // index into record_.passes
     Query begin, end;
     Clock::time_point cpu_begin, cpu_end;
+    std::uint64_t commands_begin = 0, commands_end = 0;  // gpuCommandsIssued() at each end
   };
   struct Frame {
     bool measured = false;

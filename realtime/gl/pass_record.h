@@ -21,6 +21,9 @@ struct PassRecord {
   std::vector<double> gpu_ms;  // per measured frame, from GL timestamp queries
   std::vector<double> cpu_ms;  // per measured frame, wall clock around glFinish (precise mode)
   std::vector<int> calls;      // entries per measured frame
+  // Draws and compute dispatches issued inside the pass (its inner passes' included) per
+  // measured frame (gl/gpu_commands.h). Empty in records written before they were counted.
+  std::vector<int> gpu_commands;
 };
 
 struct ProfileRecord {

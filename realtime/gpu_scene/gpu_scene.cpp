@@ -1,5 +1,6 @@
 #include "realtime/gpu_scene/gpu_scene.h"
 
+#include "realtime/gl/gpu_commands.h"
 #include "scene/camera.h"
 
 #include <glm/common.hpp>
@@ -191,7 +192,7 @@ void GpuScene::bindSceneBuffers() const {
 void GpuScene::draw() const {
   if (vertex_count_ == 0) return;
   vertex_array_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
+  gl::drawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
 }
 
 }  // namespace gib::rt

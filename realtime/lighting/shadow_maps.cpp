@@ -1,6 +1,7 @@
 #include "realtime/lighting/shadow_maps.h"
 
 #include "realtime/cube_faces.h"
+#include "realtime/gl/gpu_commands.h"
 
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
@@ -184,7 +185,7 @@ void ShadowMaps::blur(LightSampleKind kind, gl::PassProfiler& profiler) {
     glBindImageTexture(gpu::kImageDestinationUnit, destination[i]->id(), 0, layered, 0,
                        GL_WRITE_ONLY, GL_RG32F);
     glUniform2i(program.uniform("u_step"), steps[i][0], steps[i][1]);
-    glDispatchCompute(groups, groups, cube ? 6 : 1);
+    gl::dispatchCompute(groups, groups, cube ? 6 : 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
 }

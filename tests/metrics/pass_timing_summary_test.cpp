@@ -17,7 +17,8 @@ rt::PassRecord pass(std::string path, std::vector<double> gpu, std::vector<doubl
           depth,
           std::move(gpu),
           std::move(cpu),
-          std::move(calls)};
+          std::move(calls),
+          {}};
 }
 
 // Five frames on the GPU clock: frame 60 ms in all, "a" 24, "b" 15 (three entries a frame).

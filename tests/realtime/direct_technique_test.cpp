@@ -142,5 +142,24 @@ TEST(DirectTechnique, CornellErrorFallsAsLightSamplesGrow) {
   EXPECT_LT(mape.back(), 0.06);
 }
 
+// The GPU commands of a frame (draws and dispatches, what a real GPU's per-command overhead
+// scales with): with the Cornell box's 16 area-light samples, one G-buffer draw, one emission
+// draw, and per sample at most one shadow draw for each of the five cube faces its hemisphere
+// reaches and one shading draw. Fewer is better; more means a pass was added per sample.
+TEST(DirectTechnique, GpuCommandsPerFrameStayWithinTheirBound) {
+  const scene::Scene scene = scene::loadScene("cornell", {});
+  const TechniqueInfo& info = findTechnique("direct");
+  const ParameterValues values =
+      parseParameters(info.parameters, {"light_samples=16"}, "technique 'direct'");
+  TechniqueRunSettings settings = smallRun(32, 32);
+  settings.frames = 2;
+  const TechniqueRunResult result = runTechnique(scene, info, values, settings);
+  const PassRecord& frame = result.profile.passes.front();
+  ASSERT_EQ(frame.gpu_commands.size(), 2u);
+  EXPECT_GT(frame.gpu_commands[0], 0);
+  EXPECT_EQ(frame.gpu_commands[0], frame.gpu_commands[1]) << "the same work every frame";
+  EXPECT_LE(frame.gpu_commands[0], 2 + 16 * (5 + 1));
+}
+
 }  // namespace
 }  // namespace gib::rt

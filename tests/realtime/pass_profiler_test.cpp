@@ -3,6 +3,7 @@
 #include "metrics/pass_timing_summary.h"
 
 #include "realtime/gl/gl.h"
+#include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/objects.h"
 #include "realtime/gl/shader_library.h"
 #include "support/gl_test_context.h"
@@ -61,7 +62,7 @@ class Canvas {
     glViewport(0, 0, kSize, kSize);
     program_.use();
     vertex_array_.bind();
-    for (int i = 0; i < count; ++i) glDrawArrays(GL_TRIANGLES, 0, 3);
+    for (int i = 0; i < count; ++i) drawArrays(GL_TRIANGLES, 0, 3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
@@ -162,6 +163,35 @@ TEST_F(PassProfilerTest, RepeatedEntriesOfAPassInAFrameAreSummed) {
     EXPECT_GE(light.cpu_ms[frame], 3 * 2.0);  // each entry slept 2 ms
     EXPECT_EQ(find(record, "frame").calls[frame], 1);
   }
+}
+
+TEST_F(PassProfilerTest, GpuCommandsAreCountedPerPassWithTheirInnerPasses) {
+  PassProfiler profiler;
+  profiler.beginFrame(/*measured=*/false);
+  draw(5);  // a warm-up frame's draws are not recorded
+  profiler.endFrame();
+  for (int frame = 0; frame < 3; ++frame) {
+    profiler.beginFrame();
+    draw(1);  // in the frame, outside every pass
+    {
+      auto outer = profiler.pass("outer");
+      draw(2);
+      for (int entry = 1; entry <= 2; ++entry) {
+        auto inner = profiler.pass("inner");
+        draw(entry + frame);
+      }
+    }
+    profiler.endFrame();
+  }
+  const ProfileRecord record = profiler.finish();
+  // Inner: (1 + f) + (2 + f) in frame f; outer adds its own 2; the frame its 1.
+  EXPECT_EQ(find(record, "frame/outer/inner").gpu_commands, (std::vector<int>{3, 5, 7}));
+  EXPECT_EQ(find(record, "frame/outer").gpu_commands, (std::vector<int>{5, 7, 9}));
+  EXPECT_EQ(find(record, "frame").gpu_commands, (std::vector<int>{6, 8, 10}));
+  const std::vector<metrics::PassTiming> rows = metrics::summarizeProfile(record).passes;
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].gpu_commands_per_frame, 8.0);
+  EXPECT_EQ(rows[2].gpu_commands_per_frame, 5.0);
 }
 
 TEST_F(PassProfilerTest, WarmUpFramesAreCountedButNotMeasured) {

@@ -137,6 +137,9 @@ TEST_F(HtmlReport, JobPageHasMetricsImagesTimingsConvergenceAndPaperValues) {
   // Per-pass table: names indented by depth, share, calls; the bar chart.
   EXPECT_NE(html.find("padding-left:2.4em\">cube_faces"), std::string::npos);
   EXPECT_NE(html.find("30.0%"), std::string::npos);  // shadow maps: 6 of 20 ms
+  // GPU commands per frame, the frame's first: 30 draws and dispatches.
+  EXPECT_NE(html.find("GPU commands per frame"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">1</td><td class=\"num\">30</td>"), std::string::npos);
   EXPECT_NE(html.find("Median time per pass in ms"), std::string::npos);
   EXPECT_NE(html.find("upload (scene to the GPU)"), std::string::npos);
   // Convergence with its slope; the paper's numbers beside ours with the ratio.

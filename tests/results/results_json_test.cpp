@@ -113,7 +113,7 @@ TEST(ResultsJson, FiguresKeepTheirPanelsAndCellsAndRefuseCellsOutsideTheGrid) {
 TEST(ResultsJson, PassTimingsWriteEveryFieldAndTheRawSamples) {
   const metrics::PassTimings timings = test::syntheticTimings({{"frame", {10, 12, 11, 13, 14}},
                                                                {"frame/a", {4, 5, 4, 6, 5}},
-                                                               {"frame/b", {3, 3, 3, 3, 3}, 3}});
+                                                               {"frame/b", {3, 3, 3, 3, 3}, 3, 7}});
   const json j = passTimingsToJson(timings);
   const nlohmann::json parsed = nlohmann::json::parse(j.dump());
   EXPECT_EQ(parsed["clock"], "gpu");
@@ -132,6 +132,8 @@ TEST(ResultsJson, PassTimingsWriteEveryFieldAndTheRawSamples) {
   EXPECT_EQ(b["mad_ms"], 0.0);
   EXPECT_DOUBLE_EQ(b["share"].get<double>(), 0.25);
   EXPECT_EQ(b["calls_per_frame"], 3.0);
+  EXPECT_EQ(b["gpu_commands_per_frame"], 7.0);
+  EXPECT_TRUE(parsed["passes"][1]["gpu_commands_per_frame"].is_null()) << "not counted";
   EXPECT_EQ(b["gpu_median_ms"], 3.0);
   EXPECT_TRUE(b["cpu_median_ms"].is_null());
   EXPECT_EQ(b["gpu_ms"].get<std::vector<double>>(), (std::vector<double>{3, 3, 3, 3, 3}));

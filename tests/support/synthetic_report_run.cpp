@@ -74,15 +74,17 @@ metrics::PassTimings nestedPassTimings(double scale, int frames, const std::stri
     const char* path;  // under the root
     double median_ms;
     int calls;
+    int gpu_commands;  // draws and dispatches per frame
   };
-  const Spec specs[] = {{"", 20.0, 1},
-                        {"/gbuffer", 3.0, 1},
-                        {"/shadow_maps", 6.0, 4},
-                        {"/shadow_maps/cube_faces", 5.0, 24},
-                        {"/shading", 10.0, 4}};
+  const Spec specs[] = {{"", 20.0, 1, 30},
+                        {"/gbuffer", 3.0, 1, 1},
+                        {"/shadow_maps", 6.0, 4, 24},
+                        {"/shadow_maps/cube_faces", 5.0, 24, 24},
+                        {"/shading", 10.0, 4, 4}};
   std::vector<SyntheticPass> passes;
   for (const Spec& spec : specs)
-    passes.push_back({root + spec.path, samples(spec.median_ms * scale, frames), spec.calls});
+    passes.push_back(
+        {root + spec.path, samples(spec.median_ms * scale, frames), spec.calls, spec.gpu_commands});
   return syntheticTimings(passes, "cpu");
 }
 

@@ -18,6 +18,7 @@ metrics::PassTimings syntheticTimings(const std::vector<SyntheticPass>& passes,
     r.depth = int(std::count(pass.path.begin(), pass.path.end(), '/'));
     (clock == "cpu" ? r.cpu_ms : r.gpu_ms) = pass.samples_ms;
     r.calls.assign(pass.samples_ms.size(), pass.calls);
+    if (pass.gpu_commands >= 0) r.gpu_commands.assign(pass.samples_ms.size(), pass.gpu_commands);
     record.passes.push_back(std::move(r));
   }
   return metrics::summarizeProfile(record);

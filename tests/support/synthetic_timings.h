@@ -13,6 +13,7 @@ struct SyntheticPass {
   std::string path;                // "frame", "frame/shadow map", "iteration/update"
   std::vector<double> samples_ms;  // one per measured frame, on the reported clock
   int calls = 1;                   // entries per frame
+  int gpu_commands = -1;           // draws and dispatches per frame; negative: not counted
 };
 
 // The first pass is the root; every pass needs as many samples as it.

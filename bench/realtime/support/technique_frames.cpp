@@ -23,8 +23,12 @@ gl::Context& benchContext() {
 
 void reportPasses(benchmark::State& state, gl::PassProfiler& profiler, gl::Context& context) {
   const ProfileRecord record = profiler.finish();
-  for (const metrics::PassTiming& row : metrics::summarizeProfile(record).passes)
+  const metrics::PassTimings timings = metrics::summarizeProfile(record);
+  for (const metrics::PassTiming& row : timings.passes)
     state.counters[row.path + "_ms"] = row.reported.median;
+  // The draws and dispatches of a frame: what a real GPU's per-command overhead scales with.
+  if (timings.root().gpu_commands_per_frame)
+    state.counters[timings.root().path + "_gpu_commands"] = *timings.root().gpu_commands_per_frame;
   state.SetLabel(context.identity().renderer + ", " + record.reported_clock + " clock");
 }
 

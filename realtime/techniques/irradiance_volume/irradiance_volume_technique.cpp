@@ -1,5 +1,6 @@
 #include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
 
+#include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/render_target.h"
@@ -93,7 +94,7 @@ void IrradianceVolumeTechnique::project(const RenderTarget& lit) {
   coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProbeCoefficientsBinding);
   weights_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProjectionWeightsBinding);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-  glDispatchCompute(GLuint(grid_.probeCount()), 1, 1);
+  gl::dispatchCompute(GLuint(grid_.probeCount()), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

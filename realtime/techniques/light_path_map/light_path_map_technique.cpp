@@ -4,6 +4,7 @@
 #include "common/luminance_shared.h"
 #include "realtime/atlas/atlas_lighting.h"
 #include "realtime/gl/finished_time.h"
+#include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/gpu_scene/gpu_scene.h"
@@ -382,7 +383,7 @@ std::vector<AuxiliaryImage> LightPathMapTechnique::auxiliaryImages() {
   entry_normal_.bind(gpu::kEntryNormalUnit);
   glEnable(GL_PROGRAM_POINT_SIZE);
   dots_vertex_array_.bind();
-  glDrawArrays(GL_POINTS, 0, GLsizei(entries_.size()));
+  gl::drawArrays(GL_POINTS, 0, GLsizei(entries_.size()));
   glDisable(GL_PROGRAM_POINT_SIZE);
   images.push_back(
       {"entry-points",

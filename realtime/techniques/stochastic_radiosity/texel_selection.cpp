@@ -1,5 +1,6 @@
 #include "realtime/techniques/stochastic_radiosity/texel_selection.h"
 
+#include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/shader_library.h"
 
 #include <bit>
@@ -43,7 +44,7 @@ void TexelSelection::buildPyramid() const {
     bindLevel(gpu::kImageDestinationUnit, power_, level, GL_WRITE_ONLY);
     const int size = std::max(1, resolution_ >> level);
     const GLuint groups = GLuint((size + gpu::kPyramidGroupSize - 1) / gpu::kPyramidGroupSize);
-    glDispatchCompute(groups, groups, 1);
+    gl::dispatchCompute(groups, groups, 1);
   }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
@@ -72,7 +73,7 @@ void TexelSelection::selectOnGpu(const std::vector<float>& u) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glUniform1i(descend_.uniform("u_first"), level == levels_ - 2);
     bindLevel(gpu::kImageSourceUnit, power_, level, GL_READ_ONLY);
-    glDispatchCompute(groups, 1, 1);
+    gl::dispatchCompute(groups, 1, 1);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
