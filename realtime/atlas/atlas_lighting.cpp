@@ -2,8 +2,9 @@
 
 namespace gib::rt::atlas {
 
-AtlasLighting::AtlasLighting(const ShadowSettings& settings, const GpuScene& scene)
-    : shadow_maps_(settings, scene) {}
+AtlasLighting::AtlasLighting(const ShadowSettings& settings, const GpuScene& scene,
+                             std::size_t most_samples)
+    : shadow_maps_(settings, scene, shadowBatchCapacity(settings, most_samples)) {}
 
 const gl::FullScreenPass& AtlasLighting::pass(LightSampleKind kind) {
   std::optional<gl::FullScreenPass>& slot = passes_[kind == LightSampleKind::kPoint ? 0 : 1];
@@ -14,23 +15,24 @@ const gl::FullScreenPass& AtlasLighting::pass(LightSampleKind kind) {
   return *slot;
 }
 
-void AtlasLighting::add(const GpuScene& scene, const LightSample& sample,
+void AtlasLighting::add(const GpuScene& scene, std::span<const LightSample> samples,
                         const AtlasTextures& atlas, const gl::Framebuffer& target) {
-  const gl::FullScreenPass& light = pass(sample.kind);
-  shadow_maps_.render(scene, sample, unmeasured_);
-  glDisable(GL_POLYGON_OFFSET_FILL);
-  glDisable(GL_DEPTH_TEST);
-  const gl::Program& program = light.program();
-  program.use();
-  shadow_maps_.bindForLookup(program, sample);
-  setLightSampleUniforms(program, sample);
-  atlas.bind();
-  target.bind();
-  glViewport(0, 0, atlas.resolution(), atlas.resolution());
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
-  light.draw();
-  glDisable(GL_BLEND);
+  for (std::span<const LightSample> batch : lightSampleBatches(samples, shadow_maps_.capacity())) {
+    const gl::FullScreenPass& light = pass(batch.front().kind);
+    shadow_maps_.render(scene, batch, unmeasured_);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_TEST);
+    const gl::Program& program = light.program();
+    program.use();
+    shadow_maps_.bindForLookup(program);
+    atlas.bind();
+    target.bind();
+    glViewport(0, 0, atlas.resolution(), atlas.resolution());
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    light.draw();
+    glDisable(GL_BLEND);
+  }
 }
 
 }  // namespace gib::rt::atlas

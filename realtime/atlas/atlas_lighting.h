@@ -1,8 +1,8 @@
-// One light sample at a time reflected into every atlas texel: its shadow map drawn, then its
-// light reflected by each texel's front side (atlas_light.frag.glsl) added into an atlas-sized
-// target. Stochastic radiosity injects its first bounce with it; light path maps connect every
-// virtual light to the exit texels it sees with it. Work outside any frame (prepare time), so its
-// passes are not profiled.
+// Light samples reflected into every atlas texel, a batch at a time: the batch's shadow maps
+// drawn, then their light reflected by each texel's front side (atlas_light.frag.glsl) added
+// into an atlas-sized target in one pass. Stochastic radiosity injects its first bounce with
+// it; light path maps connect every virtual light to the exit texels it sees with it. Work
+// outside any frame (prepare time), so its passes are not profiled.
 #pragma once
 
 #include "realtime/atlas/atlas_textures.h"
@@ -14,16 +14,18 @@
 
 #include <array>
 #include <optional>
+#include <span>
 
 namespace gib::rt::atlas {
 
 class AtlasLighting {
  public:
-  AtlasLighting(const ShadowSettings& settings, const GpuScene& scene);
+  // `most_samples`: the largest number of samples one add() call will pass (sizes the batches).
+  AtlasLighting(const ShadowSettings& settings, const GpuScene& scene, std::size_t most_samples);
 
-  // Draws `sample`'s shadow map and adds its reflected light into `target` (a framebuffer of the
-  // atlas's size) by additive blending.
-  void add(const GpuScene& scene, const LightSample& sample, const AtlasTextures& atlas,
+  // Adds the light `samples` reflect into `target` (a framebuffer of the atlas's size) by
+  // additive blending, a batch at a time.
+  void add(const GpuScene& scene, std::span<const LightSample> samples, const AtlasTextures& atlas,
            const gl::Framebuffer& target);
 
  private:

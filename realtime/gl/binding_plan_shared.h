@@ -12,7 +12,7 @@ namespace gib::rt::gpu {
 // Texture units (sampler bindings).
 const int kGBufferPositionUnit = 0;  // gbuffer/: world position, w ray distance
 const int kGBufferNormalUnit = 1;    // gbuffer/: geometric normal, w material
-const int kShadowMapUnit = 2;        // lighting/: the current light sample's shadow map
+const int kShadowMapUnit = 2;        // lighting/: the current batch's shadow maps (an array)
 const int kTechniqueFirstUnit = 4;   // 4..7: a technique's own textures
 const int kTechniqueUnitCount = 4;
 const int kAtlasPositionUnit = 8;   // atlas/: xyz sample point, w 1 inside a chart
@@ -31,7 +31,8 @@ const int kTechniqueStorageBindingCount = 5;
 const int kTestFirstStorageBinding = 6;  // 6, 7: tests' query and result buffers
 
 // Uniform buffer bindings.
-const int kCameraBinding = 0;  // gpu_scene/: the camera block
+const int kCameraBinding = 0;        // gpu_scene/: the camera block
+const int kLightSamplesBinding = 1;  // lighting/: the current batch of light samples
 
 #ifdef __cplusplus
 }  // namespace gib::rt::gpu

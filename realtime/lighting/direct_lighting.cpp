@@ -56,7 +56,9 @@ void DirectLighting::declarePasses(
     const std::vector<std::pair<std::string_view, std::string>>& view_passes) {
   const std::string lights = passPath({parent, kLightsPass});
   passes.add(passPath({parent, kEmissionPass}), "emitters and sky seen directly");
-  passes.add(lights, "per light sample: its shadow map, then its light added into every view");
+  passes.add(lights,
+             "per batch of light samples: their shadow maps, then their light added into "
+             "every view");
   ShadowMaps::declarePasses(passes, lights);
   passes.add(passPath({lights, kShadingPass}), "light added into the camera view");
   for (const auto& [name, description] : view_passes)
@@ -71,7 +73,8 @@ void DirectLighting::prepare(const GpuScene& scene) {
   const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
   samples_ = makeLightSamples(scene.scene(), scene.emitters(), light_samples_, light_samples_,
                               1e-3f * extent);
-  shadow_maps_.emplace(shadow_settings_, scene);
+  shadow_maps_.emplace(shadow_settings_, scene,
+                       shadowBatchCapacity(shadow_settings_, samples_.size()));
   emission_ = gl::FullScreenPass("realtime/lighting/emission.frag.glsl");
   shade_point_ = gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
                                     shadow_maps_->defines(LightSampleKind::kPoint));
@@ -96,29 +99,30 @@ void DirectLighting::writeEmission(const GpuScene& scene, const GBuffer& gbuffer
 }
 
 void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>& views,
-                               gl::PassProfiler& profiler, const AfterSample& after_sample) {
+                               gl::PassProfiler& profiler, const AfterBatch& after_batch) {
   auto lights = profiler.pass(kLightsPass);
-  for (LightSample sample : samples_) {
+  std::vector<LightSample> moved = samples_;
+  for (LightSample& sample : moved)
     if (sample.kind == LightSampleKind::kPoint) sample.position += light_offset_;
-    shadow_maps_->render(scene, sample, profiler);
+  for (std::span<const LightSample> batch : lightSampleBatches(moved, shadow_maps_->capacity())) {
+    shadow_maps_->render(scene, batch, profiler);
     scene.bindSceneBuffers();
+    const gl::FullScreenPass& shade = shadePass(batch.front().kind);
+    const gl::Program& program = shade.program();
     for (const LitView& view : views) {
       auto pass = profiler.pass(view.pass);
-      const gl::FullScreenPass& shade = shadePass(sample.kind);
-      const gl::Program& program = shade.program();
       program.use();
       view.gbuffer->bindTextures();
-      shadow_maps_->bindForLookup(program, sample);
-      setLightSampleUniforms(program, sample);
+      shadow_maps_->bindForLookup(program);
       glUniform1i(program.uniform("u_normals_face_viewer"), view.normals_face_viewer ? 1 : 0);
       glDisable(GL_DEPTH_TEST);
       glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);  // each sample adds its share of the direct light
+      glBlendFunc(GL_ONE, GL_ONE);  // each batch adds its share of the direct light
       view.target->bind();
       shade.draw();
       glDisable(GL_BLEND);
     }
-    if (after_sample) after_sample(sample, *shadow_maps_);
+    if (after_batch) after_batch(*shadow_maps_);
   }
 }
 

@@ -1,7 +1,8 @@
 // Direct illumination from shadow-mapped light samples, added into one or more G-buffers' targets
 // (book Ch. 4): what `direct` renders for the camera, and what the irradiance volume renders for
 // its probes' cube maps and its camera in the same loop, so that each light sample's shadow map
-// is drawn once per frame however many views it lights.
+// is drawn once per frame however many views it lights. Samples go in batches whose shadow maps
+// are one array texture, so each view is lit by one pass per batch, not one per sample.
 #pragma once
 
 #include "common/parameters.h"
@@ -56,18 +57,18 @@ class DirectLighting {
   // Writes what the camera sees of emitters and the sky into `target` (overwriting it).
   void writeEmission(const GpuScene& scene, const GBuffer& gbuffer, const RenderTarget& target,
                      gl::PassProfiler& profiler);
-  // What else reads a light sample's shadow map while it is current (light path maps weigh their
-  // entry points with it, book §8.4.1): called after the views are lit, the sample moved by the
-  // light offset.
-  using AfterSample = std::function<void(const LightSample&, const ShadowMaps&)>;
+  // What else reads a batch's shadow maps while they are current (light path maps weigh their
+  // entry points with them, book §8.4.1): called after the views are lit, with the maps bound
+  // for lookups by ShadowMaps::bindForLookup.
+  using AfterBatch = std::function<void(const ShadowMaps&)>;
 
-  // For each light sample: its shadow map, then its light added into every view (additive
-  // blending), then `after_sample`. Inside a pass named kLightsPass.
+  // For each batch of light samples: their shadow maps, then their light added into every view
+  // (one additive pass per view), then `after_batch`. Inside a pass named kLightsPass.
   void addDirect(const GpuScene& scene, const std::vector<LitView>& views,
-                 gl::PassProfiler& profiler, const AfterSample& after_sample = {});
+                 gl::PassProfiler& profiler, const AfterBatch& after_batch = {});
 
   std::size_t sampleCount() const { return samples_.size(); }
-  // The shadow maps addDirect draws (after prepare), for programs that read them in AfterSample.
+  // The shadow maps addDirect draws (after prepare), for programs that read them in AfterBatch.
   const ShadowMaps& shadowMaps() const { return *shadow_maps_; }
   // Moves every point sample (area-light points, spot and point lights) by `offset` for the
   // next addDirect: a light that moves between frames. Zero restores the scene's lights.

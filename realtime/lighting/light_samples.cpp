@@ -1,7 +1,6 @@
 #include "realtime/lighting/light_samples.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -9,13 +8,6 @@
 #include <numbers>
 
 namespace gib::rt {
-
-void setLightSampleUniforms(const gl::Program& program, const LightSample& sample) {
-  glUniform3fv(program.uniform("u_light_intensity"), 1, glm::value_ptr(sample.intensity));
-  glUniform1f(program.uniform("u_cos_cone"), sample.cos_cone);
-  glUniform1f(program.uniform("u_exponent"), sample.exponent);
-  glUniform1f(program.uniform("u_distance_squared_offset"), sample.distance_squared_offset);
-}
 
 glm::vec2 hammersley(std::uint32_t i, std::uint32_t n) {
   // Base-2 radical inverse: the bits of i mirrored about the binary point.

@@ -26,7 +26,7 @@ struct LightSample {
   float cos_cone = -1.0f;
   float exponent = 0.0f;
   // Added to the squared distance (light_irradiance.glsl): 0 but for a virtual light that stands
-  // for a patch.
+  // for a patch. The shading passes read samples as gpu::GpuLightSample (ShadowMaps uploads them).
   float distance_squared_offset = 0.0f;
 };
 
@@ -37,9 +37,6 @@ struct LightSample {
 std::vector<LightSample> makeLightSamples(const scene::Scene& scene,
                                           const std::vector<EmitterTriangle>& emitters,
                                           int area_samples, int sky_samples, float lift);
-
-// Sets light_irradiance.glsl's uniforms of `sample` in `program` (which must be current).
-void setLightSampleUniforms(const gl::Program& program, const LightSample& sample);
 
 // Point i of an n-point Hammersley set in [0,1)²: (i + 0.5)/n and the base-2 radical inverse of i.
 glm::vec2 hammersley(std::uint32_t i, std::uint32_t n);

@@ -1,5 +1,6 @@
-// Deferred shading of one light sample (point or directional), added to the frame with additive
-// blending: f · (incident irradiance) · cosθ · visibility at each pixel's primary hit.
+// Deferred shading of one batch of light samples (point or directional) in one pass, added to
+// the frame with additive blending: the sum over the batch of f · (incident irradiance) · cosθ ·
+// visibility at each pixel's primary hit.
 #include "realtime/gpu_scene/scene.glsl"
 #include "realtime/gpu_scene/brdf.glsl"
 #include "realtime/gbuffer/shaded_surface.glsl"
@@ -12,10 +13,15 @@ void main() {
   if (!shadedSurface(ivec2(gl_FragCoord.xy), s)) discard;
   vec3 p = s.p, n = s.n, wo = s.wo;
   uint material = s.material;
+  vec3 diffuse = materialDiffuse(material), specular = materialSpecular(material);
+  float exponent = materialExponent(material);
+  bool phong = materialIsPhong(material);
 
-  vec3 wi, irradiance;
-  if (!shadowedIrradiance(p, n, wi, irradiance)) discard;
-  vec3 f = evaluateBrdf(materialDiffuse(material), materialSpecular(material),
-                        materialExponent(material), materialIsPhong(material), n, wo, wi);
-  o_radiance = vec4(f * irradiance, 0.0);
+  vec3 radiance = vec3(0.0);
+  for (int k = 0; k < u_light_sample_count; ++k) {
+    vec3 wi, irradiance;
+    if (!shadowedIrradiance(k, p, n, wi, irradiance)) continue;
+    radiance += evaluateBrdf(diffuse, specular, exponent, phong, n, wo, wi) * irradiance;
+  }
+  o_radiance = vec4(radiance, 0.0);
 }

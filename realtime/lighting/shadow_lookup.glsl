@@ -1,21 +1,22 @@
-// Visibility of the current light from a world point through its shadow map (book §4.1.2–4.1.3):
-// a depth comparison (hard: nearest texel; PCF: the hardware's bilinearly filtered comparison,
-// the book's 2×2 PCF, over a (2r+1)² grid of taps one texel apart), or for a variance shadow map
-// the one-tailed Chebyshev bound σ²/(σ² + (z − E[Z])²), taken as 1 when z ≤ E[Z].
+// Visibility of light sample k of the batch from a world point through its shadow map (book
+// §4.1.2–4.1.3): a depth comparison (hard: nearest texel; PCF: the hardware's bilinearly filtered
+// comparison, the book's 2×2 PCF, over a (2r+1)² grid of taps one texel apart), or for a variance
+// shadow map the one-tailed Chebyshev bound σ²/(σ² + (z − E[Z])²), taken as 1 when z ≤ E[Z].
+// The batch's maps are one array texture; sample k's is layer k.
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/lighting/light_space.glsl"
 
 #ifdef POINT_LIGHT
 #ifdef VARIANCE_SHADOW_MAP
-layout(binding = kShadowMapUnit) uniform samplerCube u_shadow_map;
+layout(binding = kShadowMapUnit) uniform samplerCubeArray u_shadow_map;
 #else
-layout(binding = kShadowMapUnit) uniform samplerCubeShadow u_shadow_map;
+layout(binding = kShadowMapUnit) uniform samplerCubeArrayShadow u_shadow_map;
 #endif
 #else
 #ifdef VARIANCE_SHADOW_MAP
-layout(binding = kShadowMapUnit) uniform sampler2D u_shadow_map;
+layout(binding = kShadowMapUnit) uniform sampler2DArray u_shadow_map;
 #else
-layout(binding = kShadowMapUnit) uniform sampler2DShadow u_shadow_map;
+layout(binding = kShadowMapUnit) uniform sampler2DArrayShadow u_shadow_map;
 #endif
 #endif
 
@@ -26,9 +27,9 @@ uniform int u_pcf_radius;
 uniform float u_min_variance;
 
 // World size of one shadow-map texel at p: 90° cube faces span 2·distance along the major axis.
-float texelWorldSize(vec3 p) {
+float texelWorldSize(int k, vec3 p) {
 #ifdef POINT_LIGHT
-  vec3 v = abs(p - u_light_position);
+  vec3 v = abs(p - u_light_samples[k].position.xyz);
   return 2.0 * max(v.x, max(v.y, v.z)) / float(u_shadow_map_size);
 #else
   return u_ortho_extent / float(u_shadow_map_size);
@@ -42,43 +43,44 @@ float chebyshevUpperBound(vec2 moments, float z) {
   return variance / (variance + d * d);
 }
 
-float shadowTap(vec3 p) {
+float shadowTap(int k, vec3 p) {
+  float layer = float(k);
 #ifdef POINT_LIGHT
-  vec3 v = p - u_light_position;
+  vec3 v = p - u_light_samples[k].position.xyz;
 #ifdef VARIANCE_SHADOW_MAP
-  return chebyshevUpperBound(texture(u_shadow_map, v).rg, lightDistance(p));
+  return chebyshevUpperBound(texture(u_shadow_map, vec4(v, layer)).rg, lightDistance(k, p));
 #else
   // The window depth the cube face selected by v stored for this point.
   float major = max(abs(v.x), max(abs(v.y), abs(v.z)));
   float ndc = (u_far + u_near) / (u_far - u_near) - 2.0 * u_far * u_near / ((u_far - u_near) * major);
-  return texture(u_shadow_map, vec4(v, ndc * 0.5 + 0.5));
+  return texture(u_shadow_map, vec4(v, layer), ndc * 0.5 + 0.5);
 #endif
 #else
-  vec3 c = (u_light_view_projection * vec4(p, 1.0)).xyz * 0.5 + 0.5;
+  vec3 c = (u_light_samples[k].view_projection * vec4(p, 1.0)).xyz * 0.5 + 0.5;
 #ifdef VARIANCE_SHADOW_MAP
-  return chebyshevUpperBound(texture(u_shadow_map, c.xy).rg, c.z);
+  return chebyshevUpperBound(texture(u_shadow_map, vec3(c.xy, layer)).rg, c.z);
 #else
-  return texture(u_shadow_map, c);
+  return texture(u_shadow_map, vec4(c.xy, layer, c.z));
 #endif
 #endif
 }
 
 // `n` is the surface normal on the side facing the light.
-float lightVisibility(vec3 p, vec3 n) {
-  float texel = texelWorldSize(p);
+float lightVisibility(int k, vec3 p, vec3 n) {
+  float texel = texelWorldSize(k, p);
   vec3 q = p + n * (u_normal_offset * texel);
-  if (u_pcf_radius == 0) return shadowTap(q);
+  if (u_pcf_radius == 0) return shadowTap(k, q);
 #ifdef POINT_LIGHT
-  vec3 d = normalize(q - u_light_position);
+  vec3 d = normalize(q - u_light_samples[k].position.xyz);
 #else
-  vec3 d = u_light_axis;
+  vec3 d = u_light_samples[k].axis.xyz;
 #endif
   vec3 t = normalize(abs(d.x) > 0.9 ? cross(d, vec3(0.0, 1.0, 0.0)) : cross(d, vec3(1.0, 0.0, 0.0)));
   vec3 b = cross(d, t);
   float sum = 0.0;
   for (int j = -u_pcf_radius; j <= u_pcf_radius; ++j)
     for (int i = -u_pcf_radius; i <= u_pcf_radius; ++i)
-      sum += shadowTap(q + (float(i) * t + float(j) * b) * texel);
+      sum += shadowTap(k, q + (float(i) * t + float(j) * b) * texel);
   float side = float(2 * u_pcf_radius + 1);
   return sum / (side * side);
 }

@@ -2,17 +2,19 @@
 
 #include "realtime/cube_faces.h"
 #include "realtime/gl/gpu_commands.h"
-
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
+#include "realtime/lighting/light_sample_shared.h"
 #include "realtime/lighting/lighting_shared.h"
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace gib::rt {
 
@@ -24,6 +26,9 @@ const float kFaceHalfDiagonal = std::acos(1.0f / std::sqrt(3.0f));
 // map moments far beyond any scaled light distance.
 constexpr float kFarDepth = 1.0f;
 constexpr float kFarMoments[4] = {1e4f, 1e8f, 0, 0};
+// The maps of one kind of a batch may take this much memory (a GPU has far more; llvmpipe keeps
+// them in host memory): 16 cube maps of 512² depth, or 8 with variance moments.
+constexpr double kBatchBudgetBytes = 256.0 * 1024 * 1024;
 
 std::string kindDefines(LightSampleKind kind, bool variance) {
   std::string d = kind == LightSampleKind::kPoint ? "#define POINT_LIGHT 1\n" : "";
@@ -40,57 +45,86 @@ void setupDepthTexture(gl::Texture& texture, bool compare_filtered) {
 
 }  // namespace
 
-void ShadowMaps::declarePasses(PassDeclarations& passes, std::string_view parent) {
-  passes.add(passPath({parent, kShadowMapPass}), "the scene drawn from a light sample");
-  passes.add(passPath({parent, kShadowMapFilterPass}),
-             "variance shadow maps: the separable box filter of the moments");
+int shadowBatchCapacity(const ShadowSettings& settings, std::size_t sample_count) {
+  const bool variance = settings.filter == ShadowFilter::kVariance;
+  // Per cube map: depth, and for variance maps the moments and the filter's scratch (RG32F).
+  const double bytes = 6.0 * double(settings.size) * double(settings.size) * (variance ? 20 : 4);
+  const double fit = std::floor(kBatchBudgetBytes / bytes);
+  const double most = double(std::min<std::size_t>(sample_count, gpu::kMaxLightBatch));
+  return int(std::max(1.0, std::min(fit, most)));
 }
 
-ShadowMaps::ShadowMaps(const ShadowSettings& settings, const GpuScene& scene)
-    : settings_(settings) {
+std::vector<std::span<const LightSample>> lightSampleBatches(std::span<const LightSample> samples,
+                                                             int capacity) {
+  if (capacity < 1) throw std::invalid_argument("a batch holds at least one light sample");
+  std::vector<std::span<const LightSample>> batches;
+  // Samples of one kind are contiguous in the scenes' sample lists (points, then directions),
+  // but nothing here relies on it: a batch ends where the kind changes.
+  std::size_t begin = 0;
+  while (begin < samples.size()) {
+    std::size_t end = begin + 1;
+    while (end < samples.size() && end - begin < std::size_t(capacity) &&
+           samples[end].kind == samples[begin].kind)
+      ++end;
+    batches.push_back(samples.subspan(begin, end - begin));
+    begin = end;
+  }
+  return batches;
+}
+
+void ShadowMaps::declarePasses(PassDeclarations& passes, std::string_view parent) {
+  passes.add(passPath({parent, kShadowMapPass}), "the scene drawn from a batch of light samples");
+  passes.add(passPath({parent, kShadowMapFilterPass}),
+             "variance shadow maps: the separable box filter of the batch's moments");
+}
+
+ShadowMaps::ShadowMaps(const ShadowSettings& settings, const GpuScene& scene, int capacity)
+    : settings_(settings), capacity_(capacity) {
+  if (capacity < 1 || capacity > gpu::kMaxLightBatch)
+    throw std::invalid_argument(fmt::format(
+        "a shadow map batch holds 1 to {} light samples, not {}", gpu::kMaxLightBatch, capacity));
   const glm::vec3 lo = scene.boundsMin(), hi = scene.boundsMax();
   centre_ = 0.5f * (lo + hi);
   radius_ = std::max(0.5f * glm::length(hi - lo), 1e-3f);
   near_ = 1e-4f * radius_;
   far_ = 4.0f * radius_;  // from any light inside or near the scene to its far side
+  samples_ = gl::Buffer(sizeof(gpu::GpuLightSample) * std::size_t(gpu::kMaxLightBatch), nullptr);
+}
 
-  const bool variance = settings.filter == ShadowFilter::kVariance;
-  const std::string point_defines = kindDefines(LightSampleKind::kPoint, variance);
-  const std::string flat_defines = kindDefines(LightSampleKind::kDirectional, variance);
-  auto depthProgram = [](const std::string& defines) {
-    return gl::buildProgram({{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
-                             {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
-                            defines);
+ShadowMaps::Layers& ShadowMaps::layers(LightSampleKind kind) {
+  const bool cube = kind == LightSampleKind::kPoint;
+  Layers& maps = cube ? cube_ : flat_;
+  if (!maps.framebuffers.empty()) return maps;
+  const bool variance = settings_.filter == ShadowFilter::kVariance;
+  const std::string defines = kindDefines(kind, variance);
+  maps.depth_program =
+      gl::buildProgram({{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
+                        {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
+                       defines);
+  const int n = settings_.size;
+  auto make = [&](GLenum format) {
+    return cube ? gl::Texture::makeCubeArray(format, n, capacity_)
+                : gl::Texture::make2DArray(format, n, n, capacity_);
   };
-  auto blurProgram = [](const std::string& defines) {
-    return gl::buildProgram({{GL_COMPUTE_SHADER, "realtime/lighting/vsm_blur.comp.glsl"}}, defines);
-  };
-  depth_point_ = depthProgram(point_defines);
-  depth_flat_ = depthProgram(flat_defines);
-  const int n = settings.size;
-  cube_depth_ = gl::Texture::makeCube(GL_DEPTH_COMPONENT32F, n);
-  flat_depth_ = gl::Texture::make2D(GL_DEPTH_COMPONENT32F, n, n);
+  maps.depth = make(GL_DEPTH_COMPONENT32F);
   if (variance) {
-    blur_point_ = blurProgram(point_defines);
-    blur_flat_ = blurProgram(flat_defines);
-    cube_moments_ = gl::Texture::makeCube(GL_RG32F, n);
-    cube_scratch_ = gl::Texture::makeCube(GL_RG32F, n);
-    flat_moments_ = gl::Texture::make2D(GL_RG32F, n, n);
-    flat_scratch_ = gl::Texture::make2D(GL_RG32F, n, n);
+    maps.blur_program =
+        gl::buildProgram({{GL_COMPUTE_SHADER, "realtime/lighting/vsm_blur.comp.glsl"}}, defines);
+    maps.moments = make(GL_RG32F);
+    maps.scratch = make(GL_RG32F);
   } else {
-    setupDepthTexture(cube_depth_, settings.filter == ShadowFilter::kPcf);
-    setupDepthTexture(flat_depth_, settings.filter == ShadowFilter::kPcf);
+    setupDepthTexture(maps.depth, settings_.filter == ShadowFilter::kPcf);
   }
-  for (int face = 0; face < 6; ++face) {
-    cube_faces_[std::size_t(face)].attachDepth(cube_depth_, 0, face);
-    if (variance) cube_faces_[std::size_t(face)].attachColor(0, cube_moments_, 0, face);
-    cube_faces_[std::size_t(face)].setDrawBuffers(variance ? 1 : 0);
-    cube_faces_[std::size_t(face)].checkComplete();
+  const int layer_count = cube ? 6 * capacity_ : capacity_;
+  maps.framebuffers.resize(std::size_t(layer_count));
+  for (int layer = 0; layer < layer_count; ++layer) {
+    gl::Framebuffer& fb = maps.framebuffers[std::size_t(layer)];
+    fb.attachDepth(maps.depth, 0, layer);
+    if (variance) fb.attachColor(0, maps.moments, 0, layer);
+    fb.setDrawBuffers(variance ? 1 : 0);
+    fb.checkComplete();
   }
-  flat_.attachDepth(flat_depth_);
-  if (variance) flat_.attachColor(0, flat_moments_);
-  flat_.setDrawBuffers(variance ? 1 : 0);
-  flat_.checkComplete();
+  return maps;
 }
 
 std::string ShadowMaps::defines(LightSampleKind kind) const {
@@ -105,8 +139,28 @@ glm::mat4 ShadowMaps::flatViewProjection(const LightSample& sample) const {
          glm::lookAt(eye, centre_, up);
 }
 
-void ShadowMaps::render(const GpuScene& scene, const LightSample& sample,
+void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batch,
                         gl::PassProfiler& profiler) {
+  if (batch.empty() || int(batch.size()) > capacity_)
+    throw std::invalid_argument(
+        fmt::format("a batch of {} light samples for maps of {}", batch.size(), capacity_));
+  const LightSampleKind kind = batch.front().kind;
+  for (const LightSample& sample : batch)
+    if (sample.kind != kind) throw std::invalid_argument("a batch of light samples of two kinds");
+  batch_kind_ = kind;
+  batch_size_ = int(batch.size());
+  std::vector<gpu::GpuLightSample> records;
+  for (const LightSample& s : batch) {
+    const glm::mat4 view_projection =
+        kind == LightSampleKind::kPoint ? glm::mat4(1.0f) : flatViewProjection(s);
+    records.push_back(
+        {glm::vec4(s.position, s.distance_squared_offset), glm::vec4(s.axis, s.cos_cone),
+         glm::vec4(s.intensity.x, s.intensity.y, s.intensity.z, s.exponent), view_projection});
+  }
+  samples_.update(0, records.size() * sizeof(gpu::GpuLightSample), records.data());
+  samples_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding);
+
+  Layers& maps = layers(kind);
   {
     auto pass = profiler.pass(kShadowMapPass);
     glViewport(0, 0, settings_.size, settings_.size);
@@ -117,13 +171,18 @@ void ShadowMaps::render(const GpuScene& scene, const LightSample& sample,
     // Slope-scaled depth offset: the book's depth bias, scaled by the surface's slope in the map.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
-    if (sample.kind == LightSampleKind::kPoint)
-      renderCube(scene, sample);
-    else
-      renderFlat(scene, sample);
+    maps.depth_program.use();
+    glUniform1f(maps.depth_program.uniform("u_far"), far_);
+    for (int slot = 0; slot < batch_size_; ++slot) {
+      glUniform1i(maps.depth_program.uniform("u_light_slot"), slot);
+      if (kind == LightSampleKind::kPoint)
+        renderCube(scene, batch[std::size_t(slot)], slot, maps);
+      else
+        renderFlat(scene, batch[std::size_t(slot)], slot, maps);
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
-  if (settings_.filter == ShadowFilter::kVariance) blur(sample.kind, profiler);
+  if (settings_.filter == ShadowFilter::kVariance) blur(kind, batch_size_, profiler);
 }
 
 void ShadowMaps::clear(const gl::Framebuffer& framebuffer) const {
@@ -132,60 +191,55 @@ void ShadowMaps::clear(const gl::Framebuffer& framebuffer) const {
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, kFarMoments);
 }
 
-void ShadowMaps::renderCube(const GpuScene& scene, const LightSample& sample) {
+void ShadowMaps::renderCube(const GpuScene& scene, const LightSample& sample, int slot,
+                            Layers& maps) {
   const float cone = std::acos(std::clamp(sample.cos_cone, -1.0f, 1.0f));
-  depth_point_.use();
-  glUniform3fv(depth_point_.uniform("u_light_position"), 1, glm::value_ptr(sample.position));
-  glUniform1f(depth_point_.uniform("u_far"), far_);
   for (int face = 0; face < 6; ++face) {
-    const gl::Framebuffer& fb = cube_faces_[std::size_t(face)];
+    const gl::Framebuffer& fb = maps.framebuffers[std::size_t(6 * slot + face)];
     clear(fb);
     const glm::vec3 axis = kCubeFaceAxis[face];
     const float angle = std::acos(std::clamp(glm::dot(axis, sample.axis), -1.0f, 1.0f));
     if (angle >= cone + kFaceHalfDiagonal) continue;  // the sample sends no light this way
     fb.bind();
     const glm::mat4 view_projection = cubeFaceViewProjection(sample.position, face, near_, far_);
-    glUniformMatrix4fv(depth_point_.uniform("u_face_view_projection"), 1, GL_FALSE,
+    glUniformMatrix4fv(maps.depth_program.uniform("u_face_view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view_projection));
     scene.draw();
   }
 }
 
-void ShadowMaps::renderFlat(const GpuScene& scene, const LightSample& sample) {
-  clear(flat_);
-  flat_.bind();
+void ShadowMaps::renderFlat(const GpuScene& scene, const LightSample& sample, int slot,
+                            Layers& maps) {
+  const gl::Framebuffer& fb = maps.framebuffers[std::size_t(slot)];
+  clear(fb);
+  fb.bind();
   const glm::mat4 view_projection = flatViewProjection(sample);
-  depth_flat_.use();
-  glUniformMatrix4fv(depth_flat_.uniform("u_face_view_projection"), 1, GL_FALSE,
-                     glm::value_ptr(view_projection));
-  glUniformMatrix4fv(depth_flat_.uniform("u_light_view_projection"), 1, GL_FALSE,
+  glUniformMatrix4fv(maps.depth_program.uniform("u_face_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(view_projection));
   scene.draw();
 }
 
-void ShadowMaps::blur(LightSampleKind kind, gl::PassProfiler& profiler) {
+void ShadowMaps::blur(LightSampleKind kind, int count, gl::PassProfiler& profiler) {
   auto pass = profiler.pass(kShadowMapFilterPass);
-  const bool cube = kind == LightSampleKind::kPoint;
-  const gl::Program& program = cube ? blur_point_ : blur_flat_;
-  const gl::Texture& moments = cube ? cube_moments_ : flat_moments_;
-  const gl::Texture& scratch = cube ? cube_scratch_ : flat_scratch_;
+  Layers& maps = layers(kind);
+  const gl::Program& program = maps.blur_program;
   program.use();
   glUniform1i(program.uniform("u_radius"), settings_.blur_radius);
   glUniform1i(program.uniform("u_size"), settings_.size);
   const GLuint groups =
       GLuint((settings_.size + gpu::kVsmBlurGroupSize - 1) / gpu::kVsmBlurGroupSize);
-  const GLboolean layered = cube ? GL_TRUE : GL_FALSE;
-  // Horizontal into the scratch map, then vertical back.
-  const gl::Texture* source[2] = {&moments, &scratch};
-  const gl::Texture* destination[2] = {&scratch, &moments};
+  const GLuint layer_count = GLuint(kind == LightSampleKind::kPoint ? 6 * count : count);
+  // Horizontal into the scratch maps, then vertical back, every layer of the batch at once.
+  const gl::Texture* source[2] = {&maps.moments, &maps.scratch};
+  const gl::Texture* destination[2] = {&maps.scratch, &maps.moments};
   const int steps[2][2] = {{1, 0}, {0, 1}};
   for (int i = 0; i < 2; ++i) {
-    glBindImageTexture(gpu::kImageSourceUnit, source[i]->id(), 0, layered, 0, GL_READ_ONLY,
+    glBindImageTexture(gpu::kImageSourceUnit, source[i]->id(), 0, GL_TRUE, 0, GL_READ_ONLY,
                        GL_RG32F);
-    glBindImageTexture(gpu::kImageDestinationUnit, destination[i]->id(), 0, layered, 0,
+    glBindImageTexture(gpu::kImageDestinationUnit, destination[i]->id(), 0, GL_TRUE, 0,
                        GL_WRITE_ONLY, GL_RG32F);
     glUniform2i(program.uniform("u_step"), steps[i][0], steps[i][1]);
-    gl::dispatchCompute(groups, groups, cube ? 6 : 1);
+    gl::dispatchCompute(groups, groups, layer_count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
 }
@@ -206,19 +260,12 @@ void ShadowMaps::setLookupConstants(const gl::Program& program) const {
   set1f("u_min_variance", settings_.min_variance);
 }
 
-void ShadowMaps::bindForLookup(const gl::Program& program, const LightSample& sample) const {
-  const bool cube = sample.kind == LightSampleKind::kPoint;
-  if (settings_.filter == ShadowFilter::kVariance)
-    (cube ? cube_moments_ : flat_moments_).bind(gpu::kShadowMapUnit);
-  else
-    (cube ? cube_depth_ : flat_depth_).bind(gpu::kShadowMapUnit);
-  const glm::mat4 view_projection = cube ? glm::mat4(1.0f) : flatViewProjection(sample);
-  glProgramUniform3fv(program.id(), program.uniform("u_light_position"), 1,
-                      glm::value_ptr(sample.position));
-  glProgramUniform3fv(program.id(), program.uniform("u_light_axis"), 1,
-                      glm::value_ptr(sample.axis));
-  glProgramUniformMatrix4fv(program.id(), program.uniform("u_light_view_projection"), 1, GL_FALSE,
-                            glm::value_ptr(view_projection));
+void ShadowMaps::bindForLookup(const gl::Program& program) const {
+  const Layers& maps = batch_kind_ == LightSampleKind::kPoint ? cube_ : flat_;
+  (settings_.filter == ShadowFilter::kVariance ? maps.moments : maps.depth)
+      .bind(gpu::kShadowMapUnit);
+  samples_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding);
+  glProgramUniform1i(program.id(), program.uniform("u_light_sample_count"), batch_size_);
 }
 
 }  // namespace gib::rt

@@ -1,8 +1,9 @@
-// The shadow map of one light sample at a time (book §4.1): a cube of 90° faces around a point
-// sample (the book's "six spot lights" for omnidirectional lights; faces the sample cannot light
-// are cleared, not drawn), or an orthographic map over the scene's bounding sphere for a
+// The shadow maps of a batch of light samples (book §4.1), the layers of one array texture so
+// that one pass can light a point with every sample of the batch: a cube of 90° faces around a
+// point sample (the book's "six spot lights" for omnidirectional lights; faces the sample cannot
+// light are cleared, not drawn), or an orthographic map over the scene's bounding sphere for a
 // directional sample. Hard and PCF maps hold depth and are read with hardware comparison; a
-// variance shadow map holds (d, d²), box-filtered by a compute pass.
+// variance shadow map holds (d, d²), box-filtered by a compute pass over the whole batch.
 #pragma once
 
 #include "realtime/gl/objects.h"
@@ -10,8 +11,9 @@
 #include "realtime/lighting/light_samples.h"
 #include "realtime/pass_declarations.h"
 
-#include <array>
+#include <span>
 #include <string_view>
+#include <vector>
 
 namespace gib::rt {
 
@@ -34,41 +36,63 @@ struct ShadowSettings {
   float min_variance = 1e-6f;
 };
 
+// Samples per batch for `sample_count` samples with these maps: as many as fit a memory budget
+// for one kind's maps (256 MiB), at most gpu::kMaxLightBatch and at least one.
+int shadowBatchCapacity(const ShadowSettings& settings, std::size_t sample_count);
+
+// The samples in the batches a caller renders: each batch one kind (lookups are compiled per
+// kind), at most `capacity` samples, in the samples' order within a kind (points first).
+std::vector<std::span<const LightSample>> lightSampleBatches(std::span<const LightSample> samples,
+                                                             int capacity);
+
 class ShadowMaps {
  public:
-  ShadowMaps(const ShadowSettings& settings, const GpuScene& scene);
+  // `capacity`: samples per batch at most (1..gpu::kMaxLightBatch).
+  ShadowMaps(const ShadowSettings& settings, const GpuScene& scene, int capacity);
 
   // Declares the passes of render() under `parent`.
   static void declarePasses(PassDeclarations& passes, std::string_view parent);
 
-  // Renders the map of `sample` (inside the caller's profiler passes).
-  void render(const GpuScene& scene, const LightSample& sample, gl::PassProfiler& profiler);
-  // Sets the lookup uniforms of shadow_lookup.glsl that are the same for every sample (planes,
+  int capacity() const { return capacity_; }
+
+  // Renders the maps of `batch` (one kind, 1..capacity() samples; std::invalid_argument else)
+  // into the first layers, inside the caller's profiler passes, and keeps the samples for lookups.
+  void render(const GpuScene& scene, std::span<const LightSample> batch,
+              gl::PassProfiler& profiler);
+  // Sets the lookup uniforms of shadow_lookup.glsl that are the same for every batch (planes,
   // size, offsets, filter settings) in `program`; once, when the program is built.
   void setLookupConstants(const gl::Program& program) const;
-  // Binds the map to kShadowMapUnit and sets the sample's own lookup uniforms (position, axis,
-  // projection) of `program`, which must be the variant for the sample's kind.
-  void bindForLookup(const gl::Program& program, const LightSample& sample) const;
+  // Binds the last batch's maps (kShadowMapUnit) and samples (kLightSamplesBinding) and sets the
+  // sample count of `program`, which must be the variant for the batch's kind.
+  void bindForLookup(const gl::Program& program) const;
+  LightSampleKind batchKind() const { return batch_kind_; }
 
-  // The GLSL defines of this filter, for programs that read the map.
+  // The GLSL defines of this filter, for programs that read the maps.
   std::string defines(LightSampleKind kind) const;
 
  private:
+  // The maps of one kind: depth (and moments) arrays and a framebuffer per layer (per cube face).
+  struct Layers {
+    gl::Texture depth, moments, scratch;  // moments and scratch for variance shadow maps
+    std::vector<gl::Framebuffer> framebuffers;
+    gl::Program depth_program, blur_program;
+  };
+  Layers& layers(LightSampleKind kind);
   void clear(const gl::Framebuffer& framebuffer) const;
-  void renderCube(const GpuScene& scene, const LightSample& sample);
-  void renderFlat(const GpuScene& scene, const LightSample& sample);
-  void blur(LightSampleKind kind, gl::PassProfiler& profiler);
+  void renderCube(const GpuScene& scene, const LightSample& sample, int slot, Layers& maps);
+  void renderFlat(const GpuScene& scene, const LightSample& sample, int slot, Layers& maps);
+  void blur(LightSampleKind kind, int count, gl::PassProfiler& profiler);
   glm::mat4 flatViewProjection(const LightSample& sample) const;
 
   ShadowSettings settings_;
+  int capacity_;
   float near_, far_;  // cube faces
   glm::vec3 centre_;  // bounding sphere of the scene
   float radius_;
-  gl::Program depth_point_, depth_flat_, blur_point_, blur_flat_;
-  gl::Texture cube_depth_, cube_moments_, cube_scratch_;
-  gl::Texture flat_depth_, flat_moments_, flat_scratch_;
-  std::array<gl::Framebuffer, 6> cube_faces_;
-  gl::Framebuffer flat_;
+  Layers cube_, flat_;  // made on first use: a scene may have one kind only
+  gl::Buffer samples_;  // the batch as gpu::GpuLightSample, a uniform block
+  int batch_size_ = 0;
+  LightSampleKind batch_kind_ = LightSampleKind::kPoint;
 };
 
 }  // namespace gib::rt

@@ -174,15 +174,24 @@ void LightPathMapTechnique::buildPanes(const lpm::LightWalks& walks) {
   ShadowSettings shadow;
   shadow.filter = ShadowFilter::kHard;
   shadow.size = settings_.vpl_shadow_map_size;
-  atlas::AtlasLighting lighting(shadow, *scene_);
+  // A cluster's virtual lights go in batches; no cluster holds more than this many.
+  std::size_t largest_cluster = 0, run = 0;
+  for (std::size_t i = 0; i < walks.lights.size(); ++i) {
+    const bool same = i > 0 && walks.lights[i].cluster == walks.lights[i - 1].cluster;
+    run = same ? run + 1 : 1;
+    largest_cluster = std::max(largest_cluster, run);
+  }
+  atlas::AtlasLighting lighting(shadow, *scene_, largest_cluster);
   // A virtual light stands for the patch around its point, about a texel of the atlas: its light
   // on a texel beside it is that of a disk of a texel's area (light_irradiance.glsl).
   const float distance_offset = texel_side_ * texel_side_ * std::numbers::inv_pi_v<float>;
   const float lift = 1e-3f * glm::length(scene_->boundsMax() - scene_->boundsMin());
   const float zero[4] = {0, 0, 0, 0};
   std::size_t next = 0;
+  std::vector<LightSample> cluster_lights;
   for (int c = 0; c < settings_.clusters; ++c) {
     glClearTexImage(sum.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    cluster_lights.clear();
     for (; next < walks.lights.size() && walks.lights[next].cluster == c; ++next) {
       const lpm::VirtualLight& v = walks.lights[next];
       LightSample sample;
@@ -193,8 +202,9 @@ void LightPathMapTechnique::buildPanes(const lpm::LightWalks& walks) {
       sample.cos_cone = 0.0f;
       sample.exponent = 1.0f;
       sample.distance_squared_offset = distance_offset;
-      lighting.add(*scene_, sample, *atlas_, sum_framebuffer);
+      cluster_lights.push_back(sample);
     }
+    lighting.add(*scene_, cluster_lights, *atlas_, sum_framebuffer);
     pane_framebuffer.attachColor(0, panes_, 0, c);
     glBlitNamedFramebuffer(sum_framebuffer.id(), pane_framebuffer.id(), 0, 0, r, r, 0, 0, r, r,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -237,13 +247,12 @@ void LightPathMapTechnique::render(Frame& frame) {
                                                    : fixed_light_offset_);
   const float zero[4] = {0, 0, 0, 0};
   glClearTexImage(entry_irradiance_texture_.id(), 0, GL_RGBA, GL_FLOAT, zero);
-  const auto weigh = [&](const LightSample& sample, const ShadowMaps& maps) {
+  const auto weigh = [&](const ShadowMaps& maps) {
     auto pass = profiler.pass(kEntryIrradiancePass);
     const gl::FullScreenPass& p =
-        sample.kind == LightSampleKind::kPoint ? entry_point_pass_ : entry_directional_pass_;
+        maps.batchKind() == LightSampleKind::kPoint ? entry_point_pass_ : entry_directional_pass_;
     p.use();
-    maps.bindForLookup(p.program(), sample);
-    setLightSampleUniforms(p.program(), sample);
+    maps.bindForLookup(p.program());
     entry_position_.bind(gpu::kEntryPositionUnit);
     entry_normal_.bind(gpu::kEntryNormalUnit);
     glDisable(GL_DEPTH_TEST);

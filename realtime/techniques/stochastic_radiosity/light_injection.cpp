@@ -13,8 +13,8 @@ int injectDirectLight(const GpuScene& scene, const atlas::AtlasTextures& atlas,
   ShadowSettings settings;
   settings.filter = ShadowFilter::kPcf;
   settings.size = 1024;  // once per run, so a fine map costs little
-  atlas::AtlasLighting lighting(settings, scene);
-  for (const LightSample& sample : samples) lighting.add(scene, sample, atlas, source);
+  atlas::AtlasLighting lighting(settings, scene, samples.size());
+  lighting.add(scene, samples, atlas, source);
   return int(samples.size());
 }
 
