@@ -33,6 +33,7 @@ const int kTestFirstStorageBinding = 6;  // 6, 7: tests' query and result buffer
 // Uniform buffer bindings.
 const int kCameraBinding = 0;        // gpu_scene/: the camera block
 const int kLightSamplesBinding = 1;  // lighting/: the current batch of light samples
+const int kShadowFacesBinding = 2;   // lighting/: the layers a batch's shadow pass draws
 
 #ifdef __cplusplus
 }  // namespace gib::rt::gpu

@@ -20,6 +20,7 @@
 namespace gib::rt::gpu {
 using glm::ivec2;
 using glm::ivec3;
+using glm::ivec4;
 using glm::mat4;
 using glm::vec2;
 using glm::vec3;

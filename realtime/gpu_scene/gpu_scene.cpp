@@ -189,10 +189,13 @@ void GpuScene::bindSceneBuffers() const {
   camera_block_.bindBase(GL_UNIFORM_BUFFER, gpu::kCameraBinding);
 }
 
-void GpuScene::draw() const {
-  if (vertex_count_ == 0) return;
+void GpuScene::draw(int instances) const {
+  if (vertex_count_ == 0 || instances <= 0) return;
   vertex_array_.bind();
-  gl::drawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
+  if (instances == 1)
+    gl::drawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
+  else
+    gl::drawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertex_count_), instances);
 }
 
 }  // namespace gib::rt

@@ -74,8 +74,9 @@ class GpuScene {
 
   // Binds the material buffer and the camera block to their bindings.
   void bindSceneBuffers() const;
-  // Draws every triangle with the scene's vertex attributes (the caller has bound a program).
-  void draw() const;
+  // Draws every triangle with the scene's vertex attributes (the caller has bound a program);
+  // `instances` times in one command (gl_InstanceID tells them apart: layered rendering).
+  void draw(int instances = 1) const;
 
  private:
   const scene::Scene* scene_;

@@ -19,7 +19,16 @@ struct GpuLightSample {
   mat4 view_projection;  // directional: world to the orthographic map's clip space
 };
 
+// One layer the shadow pass draws the scene into, per instance of its one draw (layered
+// rendering): a cube face of a point sample, or a directional sample's map.
+const int kMaxShadowFaces = 6 * kMaxLightBatch;
+struct ShadowFace {
+  mat4 view_projection;  // world to the face's clip space
+  ivec4 layer_slot;      // x: layer (cube maps: 6·slot + face), y: the sample's slot in the batch
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(GpuLightSample) == 112, "std140: three vec4 and a mat4");
+static_assert(sizeof(ShadowFace) * kMaxShadowFaces <= 16384, "GL 4.5's smallest uniform block");
 }  // namespace gib::rt::gpu
 #endif

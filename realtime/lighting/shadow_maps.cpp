@@ -1,6 +1,7 @@
 #include "realtime/lighting/shadow_maps.h"
 
 #include "realtime/cube_faces.h"
+#include "realtime/gl/extensions.h"
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
@@ -89,18 +90,34 @@ ShadowMaps::ShadowMaps(const ShadowSettings& settings, const GpuScene& scene, in
   near_ = 1e-4f * radius_;
   far_ = 4.0f * radius_;  // from any light inside or near the scene to its far side
   samples_ = gl::Buffer(sizeof(gpu::GpuLightSample) * std::size_t(gpu::kMaxLightBatch), nullptr);
+  faces_ = gl::Buffer(sizeof(gpu::ShadowFace) * std::size_t(gpu::kMaxShadowFaces), nullptr);
 }
 
 ShadowMaps::Layers& ShadowMaps::layers(LightSampleKind kind) {
   const bool cube = kind == LightSampleKind::kPoint;
   Layers& maps = cube ? cube_ : flat_;
-  if (!maps.framebuffers.empty()) return maps;
+  if (maps.framebuffer) return maps;
   const bool variance = settings_.filter == ShadowFilter::kVariance;
   const std::string defines = kindDefines(kind, variance);
-  maps.depth_program =
-      gl::buildProgram({{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
-                        {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
-                       defines);
+  // Layer selection in the vertex shader where the GL has it, else a pass-through geometry shader.
+  std::string layer_extension;
+  if (!settings_.layer_from_geometry_shader)
+    for (const char* name : {"GL_ARB_shader_viewport_layer_array", "GL_AMD_vertex_shader_layer"})
+      if (layer_extension.empty() && gl::hasExtension(name)) layer_extension = name;
+  if (layer_extension.empty()) {
+    maps.depth_program =
+        gl::buildProgram({{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
+                          {GL_GEOMETRY_SHADER, "realtime/lighting/shadow.geom.glsl"},
+                          {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
+                         defines);
+  } else {
+    maps.depth_program = gl::buildProgram(
+        {{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
+         {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
+        fmt::format("#extension {} : require\n#define LAYER_FROM_VERTEX_SHADER 1\n",
+                    layer_extension) +
+            defines);
+  }
   const int n = settings_.size;
   auto make = [&](GLenum format) {
     return cube ? gl::Texture::makeCubeArray(format, n, capacity_)
@@ -115,15 +132,11 @@ ShadowMaps::Layers& ShadowMaps::layers(LightSampleKind kind) {
   } else {
     setupDepthTexture(maps.depth, settings_.filter == ShadowFilter::kPcf);
   }
-  const int layer_count = cube ? 6 * capacity_ : capacity_;
-  maps.framebuffers.resize(std::size_t(layer_count));
-  for (int layer = 0; layer < layer_count; ++layer) {
-    gl::Framebuffer& fb = maps.framebuffers[std::size_t(layer)];
-    fb.attachDepth(maps.depth, 0, layer);
-    if (variance) fb.attachColor(0, maps.moments, 0, layer);
-    fb.setDrawBuffers(variance ? 1 : 0);
-    fb.checkComplete();
-  }
+  gl::Framebuffer& fb = maps.framebuffer.emplace();
+  fb.attachDepth(maps.depth);  // every layer: a layered framebuffer
+  if (variance) fb.attachColor(0, maps.moments);
+  fb.setDrawBuffers(variance ? 1 : 0);
+  fb.checkComplete();
   return maps;
 }
 
@@ -160,6 +173,27 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
   samples_.update(0, records.size() * sizeof(gpu::GpuLightSample), records.data());
   samples_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding);
 
+  // The layers to draw: every cube face a point sample can light (the others are cleared, not
+  // drawn), or each directional sample's map.
+  std::vector<gpu::ShadowFace> faces;
+  for (int slot = 0; slot < batch_size_; ++slot) {
+    const LightSample& sample = batch[std::size_t(slot)];
+    if (kind != LightSampleKind::kPoint) {
+      faces.push_back({records[std::size_t(slot)].view_projection, glm::ivec4(slot, slot, 0, 0)});
+      continue;
+    }
+    const float cone = std::acos(std::clamp(sample.cos_cone, -1.0f, 1.0f));
+    for (int face = 0; face < 6; ++face) {
+      const float angle =
+          std::acos(std::clamp(glm::dot(kCubeFaceAxis[face], sample.axis), -1.0f, 1.0f));
+      if (angle >= cone + kFaceHalfDiagonal) continue;  // the sample sends no light this way
+      faces.push_back({cubeFaceViewProjection(sample.position, face, near_, far_),
+                       glm::ivec4(6 * slot + face, slot, 0, 0)});
+    }
+  }
+  faces_.update(0, faces.size() * sizeof(gpu::ShadowFace), faces.data());
+  faces_.bindBase(GL_UNIFORM_BUFFER, gpu::kShadowFacesBinding);
+
   Layers& maps = layers(kind);
   {
     auto pass = profiler.pass(kShadowMapPass);
@@ -171,52 +205,18 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
     // Slope-scaled depth offset: the book's depth bias, scaled by the surface's slope in the map.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
+    // A layered framebuffer's clear clears every layer: nothing closer than the far plane, or
+    // for variance maps moments far beyond any scaled light distance.
+    glClearNamedFramebufferfv(maps.framebuffer->id(), GL_DEPTH, 0, &kFarDepth);
+    if (settings_.filter == ShadowFilter::kVariance)
+      glClearNamedFramebufferfv(maps.framebuffer->id(), GL_COLOR, 0, kFarMoments);
+    maps.framebuffer->bind();
     maps.depth_program.use();
     glUniform1f(maps.depth_program.uniform("u_far"), far_);
-    for (int slot = 0; slot < batch_size_; ++slot) {
-      glUniform1i(maps.depth_program.uniform("u_light_slot"), slot);
-      if (kind == LightSampleKind::kPoint)
-        renderCube(scene, batch[std::size_t(slot)], slot, maps);
-      else
-        renderFlat(scene, batch[std::size_t(slot)], slot, maps);
-    }
+    scene.draw(int(faces.size()));
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
   if (settings_.filter == ShadowFilter::kVariance) blur(kind, batch_size_, profiler);
-}
-
-void ShadowMaps::clear(const gl::Framebuffer& framebuffer) const {
-  glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &kFarDepth);
-  if (settings_.filter == ShadowFilter::kVariance)
-    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, kFarMoments);
-}
-
-void ShadowMaps::renderCube(const GpuScene& scene, const LightSample& sample, int slot,
-                            Layers& maps) {
-  const float cone = std::acos(std::clamp(sample.cos_cone, -1.0f, 1.0f));
-  for (int face = 0; face < 6; ++face) {
-    const gl::Framebuffer& fb = maps.framebuffers[std::size_t(6 * slot + face)];
-    clear(fb);
-    const glm::vec3 axis = kCubeFaceAxis[face];
-    const float angle = std::acos(std::clamp(glm::dot(axis, sample.axis), -1.0f, 1.0f));
-    if (angle >= cone + kFaceHalfDiagonal) continue;  // the sample sends no light this way
-    fb.bind();
-    const glm::mat4 view_projection = cubeFaceViewProjection(sample.position, face, near_, far_);
-    glUniformMatrix4fv(maps.depth_program.uniform("u_face_view_projection"), 1, GL_FALSE,
-                       glm::value_ptr(view_projection));
-    scene.draw();
-  }
-}
-
-void ShadowMaps::renderFlat(const GpuScene& scene, const LightSample& sample, int slot,
-                            Layers& maps) {
-  const gl::Framebuffer& fb = maps.framebuffers[std::size_t(slot)];
-  clear(fb);
-  fb.bind();
-  const glm::mat4 view_projection = flatViewProjection(sample);
-  glUniformMatrix4fv(maps.depth_program.uniform("u_face_view_projection"), 1, GL_FALSE,
-                     glm::value_ptr(view_projection));
-  scene.draw();
 }
 
 void ShadowMaps::blur(LightSampleKind kind, int count, gl::PassProfiler& profiler) {

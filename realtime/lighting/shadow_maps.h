@@ -2,8 +2,9 @@
 // that one pass can light a point with every sample of the batch: a cube of 90° faces around a
 // point sample (the book's "six spot lights" for omnidirectional lights; faces the sample cannot
 // light are cleared, not drawn), or an orthographic map over the scene's bounding sphere for a
-// directional sample. Hard and PCF maps hold depth and are read with hardware comparison; a
-// variance shadow map holds (d, d²), box-filtered by a compute pass over the whole batch.
+// directional sample. Every face of a batch is drawn by one instanced draw (layered rendering).
+// Hard and PCF maps hold depth and are read with hardware comparison; a variance shadow map holds
+// (d, d²), box-filtered by a compute pass over the whole batch.
 #pragma once
 
 #include "realtime/gl/objects.h"
@@ -11,6 +12,7 @@
 #include "realtime/lighting/light_samples.h"
 #include "realtime/pass_declarations.h"
 
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -34,6 +36,9 @@ struct ShadowSettings {
   float normal_offset = 1;  // receiver offset along its normal, in texels
   int blur_radius = 2;      // variance shadow map: (2r+1)² box, the book's 5×5
   float min_variance = 1e-6f;
+  // The shadow pass selects each instance's layer in the vertex shader where the GL can, else in
+  // a geometry shader; true takes the geometry shader anyway (tests compare the two).
+  bool layer_from_geometry_shader = false;
 };
 
 // Samples per batch for `sample_count` samples with these maps: as many as fit a memory budget
@@ -71,16 +76,13 @@ class ShadowMaps {
   std::string defines(LightSampleKind kind) const;
 
  private:
-  // The maps of one kind: depth (and moments) arrays and a framebuffer per layer (per cube face).
+  // The maps of one kind: depth (and moments) arrays and the layered framebuffer over them.
   struct Layers {
     gl::Texture depth, moments, scratch;  // moments and scratch for variance shadow maps
-    std::vector<gl::Framebuffer> framebuffers;
+    std::optional<gl::Framebuffer> framebuffer;
     gl::Program depth_program, blur_program;
   };
   Layers& layers(LightSampleKind kind);
-  void clear(const gl::Framebuffer& framebuffer) const;
-  void renderCube(const GpuScene& scene, const LightSample& sample, int slot, Layers& maps);
-  void renderFlat(const GpuScene& scene, const LightSample& sample, int slot, Layers& maps);
   void blur(LightSampleKind kind, int count, gl::PassProfiler& profiler);
   glm::mat4 flatViewProjection(const LightSample& sample) const;
 
@@ -91,6 +93,7 @@ class ShadowMaps {
   float radius_;
   Layers cube_, flat_;  // made on first use: a scene may have one kind only
   gl::Buffer samples_;  // the batch as gpu::GpuLightSample, a uniform block
+  gl::Buffer faces_;    // the layers the shadow pass draws, gpu::ShadowFace
   int batch_size_ = 0;
   LightSampleKind batch_kind_ = LightSampleKind::kPoint;
 };
