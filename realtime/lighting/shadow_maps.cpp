@@ -50,7 +50,8 @@ int shadowBatchCapacity(const ShadowSettings& settings, std::size_t sample_count
   const bool variance = settings.filter == ShadowFilter::kVariance;
   // Per cube map: depth, and for variance maps the moments and the filter's scratch (RG32F).
   const double bytes = 6.0 * double(settings.size) * double(settings.size) * (variance ? 20 : 4);
-  const double fit = std::floor(kBatchBudgetBytes / bytes);
+  const double fit = settings.batch_capacity > 0 ? double(settings.batch_capacity)
+                                                 : std::floor(kBatchBudgetBytes / bytes);
   const double most = double(std::min<std::size_t>(sample_count, gpu::kMaxLightBatch));
   return int(std::max(1.0, std::min(fit, most)));
 }

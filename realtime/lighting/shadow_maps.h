@@ -39,10 +39,14 @@ struct ShadowSettings {
   // The shadow pass selects each instance's layer in the vertex shader where the GL can, else in
   // a geometry shader; true takes the geometry shader anyway (tests compare the two).
   bool layer_from_geometry_shader = false;
+  // Samples per batch; 0 chooses by memory (shadowBatchCapacity). Tests set 1, the per-sample
+  // passes of before batching, to compare.
+  int batch_capacity = 0;
 };
 
-// Samples per batch for `sample_count` samples with these maps: as many as fit a memory budget
-// for one kind's maps (256 MiB), at most gpu::kMaxLightBatch and at least one.
+// Samples per batch for `sample_count` samples with these maps: settings.batch_capacity if set,
+// else as many as fit a memory budget for one kind's maps (256 MiB); at most gpu::kMaxLightBatch
+// and at least one.
 int shadowBatchCapacity(const ShadowSettings& settings, std::size_t sample_count);
 
 // The samples in the batches a caller renders: each batch one kind (lookups are compiled per

@@ -5,6 +5,7 @@
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/gpu_scene/gpu_scene_shared.h"
+#include "realtime/lighting/light_sample_shared.h"
 #include "realtime/lighting/lighting_shared.h"
 #include "realtime/sh/spherical_harmonics_shared.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
@@ -38,6 +39,7 @@ TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
       "realtime/gl/binding_plan_shared.h",
       "realtime/gl/host_device_shared.h",
       "realtime/gpu_scene/gpu_scene_shared.h",
+      "realtime/lighting/light_sample_shared.h",
       "realtime/lighting/lighting_shared.h",
       "realtime/sh/spherical_harmonics_shared.h",
       "realtime/techniques/irradiance_volume/irradiance_volume_shared.h",
@@ -81,6 +83,10 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"kAtlasEmissionUnit", kAtlasEmissionUnit},
       {"kMaterialsBinding", kMaterialsBinding},
       {"kCameraBinding", kCameraBinding},
+      {"kLightSamplesBinding", kLightSamplesBinding},
+      {"kShadowFacesBinding", kShadowFacesBinding},
+      {"kMaxLightBatch", kMaxLightBatch},
+      {"kMaxShadowFaces", kMaxShadowFaces},
       {"kMaterialPhong", kMaterialPhong},
       {"kVertexAtlasUvLocation", kVertexAtlasUvLocation},
       {"kVsmBlurGroupSize", kVsmBlurGroupSize},
@@ -155,6 +161,41 @@ TEST_F(SharedHeaders, SharedStructsHaveTheCppLayoutInTheDriver) {
   EXPECT_EQ(property(GL_UNIFORM, "camera.position", GL_OFFSET), offsetof(gpu::Camera, position));
   EXPECT_EQ(property(GL_UNIFORM, "camera.image_size", GL_OFFSET),
             offsetof(gpu::Camera, image_size));
+}
+
+// A batch of light samples and the shadow pass's faces (uniform blocks, std140): the second
+// element's members sit where the C++ arrays put them.
+TEST_F(SharedHeaders, LightSampleBlocksHaveTheCppLayoutInTheDriver) {
+  const gl::Program program = layoutProgram(
+      "#include \"realtime/gl/binding_plan_shared.h\"\n"
+      "#include \"realtime/lighting/light_sample_shared.h\"\n"
+      "layout(std140, binding = kLightSamplesBinding) uniform LightSampleBlock {\n"
+      "  GpuLightSample samples[kMaxLightBatch];\n"
+      "};\n"
+      "layout(std140, binding = kShadowFacesBinding) uniform ShadowFaceBlock {\n"
+      "  ShadowFace faces[kMaxShadowFaces];\n"
+      "};\n"
+      "layout(std430, binding = kTestFirstStorageBinding) buffer Out { vec4 o; };\n"
+      "layout(local_size_x = 1) in;\n"
+      "void main() {\n"
+      "  int k = int(o.w);\n"
+      "  o = samples[k].position + samples[k].axis + samples[k].intensity +\n"
+      "      samples[k].view_projection[0] + faces[k].view_projection[1] + "
+      "vec4(faces[k].layer_slot);\n"
+      "}\n");
+  auto offset = [&](const char* name) {
+    return resourceProperty(program, GL_UNIFORM, name, GL_OFFSET);
+  };
+  using gpu::GpuLightSample;
+  using gpu::ShadowFace;
+  EXPECT_EQ(offset("samples[1].position"), sizeof(GpuLightSample));
+  EXPECT_EQ(offset("samples[1].axis"), sizeof(GpuLightSample) + offsetof(GpuLightSample, axis));
+  EXPECT_EQ(offset("samples[1].intensity"),
+            sizeof(GpuLightSample) + offsetof(GpuLightSample, intensity));
+  EXPECT_EQ(offset("samples[1].view_projection"),
+            sizeof(GpuLightSample) + offsetof(GpuLightSample, view_projection));
+  EXPECT_EQ(offset("faces[1].view_projection"), sizeof(ShadowFace));
+  EXPECT_EQ(offset("faces[1].layer_slot"), sizeof(ShadowFace) + offsetof(ShadowFace, layer_slot));
 }
 
 // The light path map's selected panes (its own binding, so a program of its own).
