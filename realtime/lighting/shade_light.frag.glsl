@@ -18,10 +18,14 @@ void main() {
   bool phong = materialIsPhong(material);
 
   vec3 radiance = vec3(0.0);
+  bool lit = false;
   for (int k = 0; k < u_light_sample_count; ++k) {
     vec3 wi, irradiance;
     if (!shadowedIrradiance(k, p, n, wi, irradiance)) continue;
     radiance += evaluateBrdf(diffuse, specular, exponent, phong, n, wo, wi) * irradiance;
+    lit = true;
   }
+  // Nothing to add where no sample reaches (outside a spot's cone, behind the surface): no blend.
+  if (!lit) discard;
   o_radiance = vec4(radiance, 0.0);
 }
