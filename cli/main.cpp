@@ -2,7 +2,6 @@
 // Exit codes: 0 success, 1 a regression found (diff), 2 bad input, 3 an internal failure.
 #include "cli/commands.h"
 #include "common/input_error.h"
-#include "common/quiescent_leak_check.h"
 #include "gib/version.h"
 
 #include <fmt/format.h>
@@ -12,9 +11,7 @@
 #include <map>
 #include <string>
 
-namespace {
-
-int runGibench(int argc, char** argv) {
+int main(int argc, char** argv) {
   CLI::App app{"gibench: validation and benchmark harness for real-time global illumination",
                "gibench"};
   app.set_version_flag("--version", std::string(gib::kVersion));
@@ -57,12 +54,4 @@ int runGibench(int argc, char** argv) {
     fmt::print(stderr, "gibench: internal error: {}\n", e.what());
     return 3;
   }
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  const int exit_code = runGibench(argc, argv);
-  gib::checkLeaksWhileQuiescent();
-  return exit_code;
 }
