@@ -192,10 +192,7 @@ void GpuScene::bindSceneBuffers() const {
 void GpuScene::draw(int instances) const {
   if (vertex_count_ == 0 || instances <= 0) return;
   vertex_array_.bind();
-  if (instances == 1)
-    gl::drawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
-  else
-    gl::drawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertex_count_), instances);
+  gl::drawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertex_count_), instances);
 }
 
 }  // namespace gib::rt

@@ -58,8 +58,8 @@ class DirectLighting {
   void writeEmission(const GpuScene& scene, const GBuffer& gbuffer, const RenderTarget& target,
                      gl::PassProfiler& profiler);
   // What else reads a batch's shadow maps while they are current (light path maps weigh their
-  // entry points with them, book §8.4.1): called after the views are lit, with the maps bound
-  // for lookups by ShadowMaps::bindForLookup.
+  // entry points with them, book §8.4.1): called after the views are lit; a program reads the
+  // batch through ShadowMaps::bindForLookup.
   using AfterBatch = std::function<void(const ShadowMaps&)>;
 
   // For each batch of light samples: their shadow maps, then their light added into every view

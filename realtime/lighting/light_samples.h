@@ -4,7 +4,6 @@
 // exact direct illumination, which is what makes `direct` comparable with the reference's LDE.
 #pragma once
 
-#include "realtime/gl/objects.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "scene/scene.h"
 
