@@ -47,8 +47,9 @@ void diffValues(const std::string& job, const NamedValues& base, const NamedValu
                 std::string_view prefix, const Tolerances& tolerances,
                 std::vector<MetricChange>& out) {
   for (const auto& [name, base_value] : base) {
-    auto it =
-        std::find_if(next.begin(), next.end(), [&](const auto& v) { return v.first == name; });
+    // (clang 14, the sanitizer build's compiler, cannot capture a structured binding.)
+    auto it = std::find_if(next.begin(), next.end(),
+                           [&name = name](const auto& v) { return v.first == name; });
     if (it == next.end()) continue;
     MetricChange change;
     change.job = job;

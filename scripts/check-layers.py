@@ -27,8 +27,8 @@ ALLOWED = {
     "reports": ["common", "image", "metrics", "results"],
 }
 EVERYTHING = ["common", "scene", "image", "reference", "realtime", "metrics", "results",
-              "suites", "reports", "cli", "tests", "bench"]
-for top in ("cli", "tests", "bench"):
+              "suites", "reports", "cli", "tests", "bench", "fuzz"]
+for top in ("cli", "tests", "bench", "fuzz"):
     ALLOWED[top] = EVERYTHING
 
 # Headers of heavy or platform libraries, and the only places that may include them.

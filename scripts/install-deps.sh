@@ -7,6 +7,9 @@ set -euo pipefail
 packages=(
   # Toolchain
   build-essential cmake ninja-build pkg-config git clang-format python3
+  # The sanitizer build (asan preset) and the fuzz targets: clang with its sanitizer and libFuzzer
+  # runtimes
+  clang libclang-rt-14-dev
   # Reference renderer
   libembree-dev libtbb-dev
   # Images and colour

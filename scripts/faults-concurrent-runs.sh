@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# Concurrent runs on one reference store and one history database (docs/reliability.md,
+# "Faults"): in each round, N `gibench run` processes start at once on a suite whose jobs share
+# references, with a fresh store. Checks that every run completes (no "database is locked"), that
+# each reference is rendered by exactly one process (the others wait for it and read it), that
+# the database records every run, and that nothing is left damaged
+# (scripts/check-run-integrity.py).
+#
+#   scripts/faults-concurrent-runs.sh GIBENCH [--runs N] [--rounds R] [--work DIR]
+#
+# Prints one line per round and a total; exits 1 when a round fails, 2 on bad arguments.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+[ $# -ge 1 ] || { echo "faults-concurrent-runs.sh: give the gibench binary; see the usage at the top" >&2; exit 2; }
+gibench=$(realpath "$1")
+shift
+runs=4
+rounds=3
+work=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs) runs=$2; shift 2 ;;
+    --rounds) rounds=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    *) echo "faults-concurrent-runs.sh: unknown argument '$1'; see the usage at the top" >&2; exit 2 ;;
+  esac
+done
+if [ -z "$work" ]; then
+  work=$(mktemp -d "${TMPDIR:-/tmp}/gibench-concurrent-XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
+mkdir -p "$work"
+suite="$work/concurrent.toml"
+# Four cases, five references: the Cornell box's direct-light and full references are each
+# needed by two jobs (a technique's reference and its full reference, and the reference job).
+cat >"$suite" <<'TOML'
+name = "concurrent"
+[defaults]
+width = 32
+height = 24
+frames = 1
+warmup = 0
+metrics = ["relmse"]
+[defaults.reference]
+spp = 64
+[[case]]
+scene = "cornell"
+technique = "direct"
+[[case]]
+scene = "cornell"
+technique = "reference"
+[[case]]
+scene = "chamber"
+technique = "direct"
+[[case]]
+scene = "furnace"
+technique = "reference"
+TOML
+
+failed=0
+for round in $(seq "$rounds"); do
+  dir="$work/round-$round"
+  mkdir -p "$dir"
+  pids=()
+  for k in $(seq "$runs"); do
+    "$gibench" run "$suite" --out "$dir/out-$k" --store "$dir/store" --db "$dir/history.sqlite" \
+      >"$dir/$k.stdout" 2>"$dir/$k.stderr" &
+    pids+=($!)
+  done
+  problem=""
+  for k in $(seq "$runs"); do
+    if ! wait "${pids[$((k - 1))]}"; then
+      problem="$problem; run $k failed: $(grep '^gibench: ' "$dir/$k.stderr" | head -1)"
+    fi
+  done
+  if grep -l 'database is locked' "$dir"/*.stderr >/dev/null 2>&1; then
+    problem="$problem; 'database is locked'"
+  fi
+  # Renders per store key, from the runs' results: a reference a run rendered is not a store hit.
+  renders=$(python3 - "$dir" "$runs" <<'PY'
+import collections, json, sys
+directory, runs = sys.argv[1], int(sys.argv[2])
+count = collections.Counter()
+keys = set()
+for k in range(1, runs + 1):
+    try:
+        results = json.load(open(f"{directory}/out-{k}/results.json"))
+    except OSError:
+        continue
+    for job in results["jobs"]:
+        for field in ("reference", "full_reference"):
+            reference = job.get(field)
+            if reference:
+                keys.add(reference["key"])
+                count[reference["key"]] += 0 if reference["store_hit"] else 1
+print(" ".join(str(count[key]) for key in sorted(keys)))
+PY
+)
+  for n in $renders; do
+    if [ "$n" -ne 1 ]; then problem="$problem; a reference rendered $n times (per key: $renders)"; break; fi
+  done
+  recorded=$(python3 -c 'import sqlite3, sys; print(sqlite3.connect(sys.argv[1]).execute("SELECT count(*) FROM runs").fetchone()[0])' "$dir/history.sqlite")
+  if [ "$recorded" -ne "$runs" ]; then problem="$problem; $recorded runs recorded, not $runs"; fi
+  for k in $(seq "$runs"); do
+    shared=()  # the store and the database are shared: checked once
+    if [ "$k" -eq 1 ]; then shared=(--store "$dir/store" --db "$dir/history.sqlite"); fi
+    if ! integrity=$(python3 "$here/check-run-integrity.py" "$gibench" --out "$dir/out-$k" \
+                       "${shared[@]}" --no-temporaries); then
+      problem="$problem; run $k left: $integrity"
+    fi
+  done
+  if [ -n "$problem" ]; then
+    failed=$((failed + 1))
+    echo "FAIL round $round: ${problem#; }"
+  else
+    echo "ok   round $round: $runs runs completed and recorded; renders per reference: $renders"
+  fi
+done
+echo "concurrent runs: $rounds rounds of $runs, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,132 @@
+#!/usr/bin/env bash
+# Disk full while `gibench run` writes (docs/reliability.md, "Faults"). For each limit L (KiB) and
+# with and without the history database, runs a small suite with every file it writes capped at
+# L KiB: `ulimit -f` with SIGXFSZ ignored, so that a write past the cap fails (EFBIG) as one on a
+# full disk does (ENOSPC), whatever file it is: an image, a store entry, a JSON file, the history
+# database or a report page. Then checks that
+#   - the run either completed or stopped with exit code 2 and one line "gibench: cannot write …"
+#     (never a crash or an internal error);
+#   - nothing partial is left that a later run would trust, and no temporary file at all
+#     (scripts/check-run-integrity.py: JSON whole, EXRs whole, `store verify`, the database's
+#     integrity check);
+#   - the same command without the cap resumes and completes, with the same metric values as an
+#     uninterrupted run.
+#
+#   scripts/faults-disk-full.sh GIBENCH [--limits "2 4 8 16 32"] [--work DIR]
+#
+# Prints one line per case and a total; exits 1 when any case fails, 2 on bad arguments.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+[ $# -ge 1 ] || { echo "faults-disk-full.sh: give the gibench binary; see the usage at the top" >&2; exit 2; }
+gibench=$(realpath "$1")
+shift
+limits="2 4 8 12 16 24 32 48"
+work=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --limits) limits=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    *) echo "faults-disk-full.sh: unknown argument '$1'; see the usage at the top" >&2; exit 2 ;;
+  esac
+done
+if [ -z "$work" ]; then
+  work=$(mktemp -d "${TMPDIR:-/tmp}/gibench-disk-full-XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
+mkdir -p "$work"
+suite="$work/disk-full.toml"
+cat >"$suite" <<'TOML'
+name = "disk-full"
+[defaults]
+width = 32
+height = 24
+frames = 1
+warmup = 0
+metrics = ["relmse", "flip"]
+[defaults.reference]
+spp = 16
+[[case]]
+scene = "cornell"
+technique = "direct"
+[[case]]
+scene = "cornell"
+technique = "reference"
+TOML
+
+# The metric values of every job, one "job metric value" line each, for comparing runs.
+metric_values() {
+  python3 -c '
+import json, sys
+for job in json.load(open(sys.argv[1]))["jobs"]:
+    for name, value in sorted((job.get("metrics") or {}).items()):
+        print(job["id"], name, repr(value))' "$1/results.json"
+}
+
+# The database's runs: a failed write must leave it as it was.
+recorded_runs() {
+  python3 -c 'import sqlite3, sys; print(sqlite3.connect(sys.argv[1]).execute("SELECT count(*) FROM runs").fetchone()[0])' "$1"
+}
+
+# An uninterrupted run, recorded in a database that each case with history starts from, so that
+# a cap can fall on the append of a second run as well as on the creation of the file.
+"$gibench" run "$suite" --out "$work/baseline" --store "$work/baseline-store" \
+  --db "$work/baseline.sqlite" >/dev/null 2>&1
+expected=$(metric_values "$work/baseline")
+
+cases=0
+failed=0
+stopped=0
+for limit in $limits; do
+  for history in with without; do
+    cases=$((cases + 1))
+    dir="$work/$limit-$history"
+    args=(--out "$dir/out" --store "$dir/store")
+    mkdir -p "$dir"
+    if [ "$history" = with ]; then
+      cp "$work/baseline.sqlite" "$dir/history.sqlite"
+      args+=(--db "$dir/history.sqlite")
+    else
+      args+=(--no-history)
+    fi
+    status=0
+    (trap '' XFSZ; ulimit -f "$limit"; exec "$gibench" run "$suite" "${args[@]}") \
+      >"$dir.stdout" 2>"$dir.stderr" || status=$?
+    problem=""
+    error_line=$(grep '^gibench: ' "$dir.stderr" || true)
+    if [ "$status" -ne 0 ]; then
+      stopped=$((stopped + 1))
+      if [ "$status" -ne 2 ]; then problem="exit $status, not 2"; fi
+      if [ "$(printf '%s\n' "$error_line" | grep -c .)" -ne 1 ]; then
+        problem="$problem; not one error line"
+      elif ! printf '%s' "$error_line" | grep -q '^gibench: cannot write'; then
+        problem="$problem; unexpected error: $error_line"
+      fi
+    fi
+    db_args=()
+    if [ "$history" = with ]; then
+      db_args=(--db "$dir/history.sqlite")
+      runs=$(recorded_runs "$dir/history.sqlite")
+      if grep -q 'history database' <<<"$error_line" && [ "$runs" -ne 1 ]; then
+        problem="$problem; the database holds $runs runs after its failed append, not 1"
+      fi
+    fi
+    if ! integrity=$(python3 "$here/check-run-integrity.py" "$gibench" --out "$dir/out" \
+                       --store "$dir/store" "${db_args[@]}" --no-temporaries); then
+      problem="$problem; left behind: $integrity"
+    fi
+    if ! "$gibench" run "$suite" "${args[@]}" >"$dir.resume.stdout" 2>"$dir.resume.stderr"; then
+      problem="$problem; the resumed run failed: $(tail -1 "$dir.resume.stderr")"
+    elif [ "$(metric_values "$dir/out")" != "$expected" ]; then
+      problem="$problem; the resumed run measured other values than an uninterrupted one"
+    fi
+    if [ "$status" -eq 0 ]; then outcome="completed"; else outcome="stopped: ${error_line#gibench: }"; fi
+    if [ -n "$problem" ]; then
+      failed=$((failed + 1))
+      echo "FAIL limit $limit KiB, $history history: $outcome;${problem#;}"
+    else
+      echo "ok   limit $limit KiB, $history history: $outcome; nothing partial; resumed equal"
+    fi
+  done
+done
+echo "disk full: $cases cases, $stopped stopped by the cap, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Builds and runs the libFuzzer targets of fuzz/ (docs/reliability.md, "Fuzzing").
+#
+#   scripts/fuzz.sh [--seconds N] [--jobs J] [--build-dir DIR] [--run-only] [--merge] [TARGET ...]
+#
+# Every target by default (`scripts/fuzz.sh --list` names them). Each runs N seconds (default 60)
+# on its checked-in corpus fuzz/corpus/<target>/, with its dictionary fuzz/dictionaries/ where
+# there is one; inputs it finds are kept in DIR/fuzz/<target>/corpus, and a crash, hang, leak or
+# out-of-memory input in DIR/fuzz/<target>/artifacts. --jobs J runs that many targets at once.
+# --merge adds the found inputs that reach new coverage to the checked-in corpus (libFuzzer's
+# -merge=1), for a maintainer to review and commit. The build is the clang sanitizer build (the
+# asan preset, build/asan) unless --build-dir names another; --run-only skips building.
+# Prints one line per target (executions, coverage, crashes) and exits 1 when any target found
+# something, 2 on bad arguments.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+seconds=60
+jobs=1
+build_dir=build/asan
+run_only=0
+merge=0
+targets=()
+usage() { echo "fuzz.sh: $1; see the usage at the top of scripts/fuzz.sh" >&2; exit 2; }
+all_targets() { for f in fuzz/*_fuzzer.cpp; do basename "$f" _fuzzer.cpp; done; }
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --seconds) [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || usage "--seconds takes a positive integer"
+               seconds=$2; shift 2 ;;
+    --jobs) [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || usage "--jobs takes a positive integer"
+            jobs=$2; shift 2 ;;
+    --build-dir) [ -n "${2:-}" ] || usage "--build-dir takes a directory"
+                 build_dir=$2; shift 2 ;;
+    --run-only) run_only=1; shift ;;
+    --merge) merge=1; shift ;;
+    --list) all_targets; exit 0 ;;
+    -*) usage "unknown option '$1'" ;;
+    *) [ -f "fuzz/$1_fuzzer.cpp" ] || usage "unknown fuzz target '$1' (known: $(all_targets | xargs))"
+       targets+=("$1"); shift ;;
+  esac
+done
+if [ ${#targets[@]} -eq 0 ]; then mapfile -t targets < <(all_targets); fi
+
+if [ "$run_only" = 0 ]; then
+  scripts/install-deps.sh
+  build_targets=()
+  for t in "${targets[@]}"; do build_targets+=("gib_fuzz_$t"); done
+  scripts/build.sh asan "${build_targets[@]}"
+fi
+
+# One target: libFuzzer writes new inputs into the first corpus directory only, so the checked-in
+# one (second) is read, never changed. The RSS limit leaves room for the sanitizers' shadow
+# memory; an input that takes over 10 s is a hang.
+run_target() {
+  local t=$1 work="$build_dir/fuzz/$1"
+  local binary="$build_dir/fuzz/gib_fuzz_$t"
+  [ -x "$binary" ] || { echo "fuzz.sh: $binary is missing; build it (drop --run-only)" >&2; return 2; }
+  mkdir -p "$work/corpus" "$work/artifacts"
+  local dict=()
+  local dict_file="fuzz/dictionaries/$t.dict"
+  [ "$t" = history_row ] && dict_file=fuzz/dictionaries/results_json.dict  # rows hold results
+  [ -f "$dict_file" ] && dict=("-dict=$dict_file")
+  local log="$work/last-run.log"
+  local status=0
+  ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}" \
+    "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+    -artifact_prefix="$work/artifacts/" "${dict[@]}" "$work/corpus" "fuzz/corpus/$t" \
+    >"$log" 2>&1 || status=$?
+  local runs cov
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
+  if [ "$status" -ne 0 ]; then
+    echo "fuzz $t: FOUND a problem after ${runs:-?} executions (exit $status); input in $work/artifacts, log $log" >&2
+    grep -m3 -E 'ERROR|SUMMARY|uncaught|terminate' "$log" >&2 || tail -5 "$log" >&2
+    return 1
+  fi
+  echo "fuzz $t: ${runs:-0} executions in ${seconds} s, coverage ${cov:-0} edges, no crash"
+  if [ "$merge" = 1 ]; then
+    "$binary" -merge=1 "fuzz/corpus/$t" "$work/corpus" >"$work/merge.log" 2>&1
+    echo "fuzz $t: merged into fuzz/corpus/$t ($(grep -o 'added [0-9]* new units' "$work/merge.log" || echo 'nothing new'))"
+  fi
+}
+
+failed=0
+running=0
+for t in "${targets[@]}"; do
+  run_target "$t" &
+  running=$((running + 1))
+  if [ "$running" -ge "$jobs" ]; then wait -n || failed=1; running=$((running - 1)); fi
+done
+while [ "$running" -gt 0 ]; do wait -n || failed=1; running=$((running - 1)); done
+exit "$failed"
