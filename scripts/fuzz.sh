@@ -4,8 +4,8 @@
 #   scripts/fuzz.sh [--seconds N] [--jobs J] [--build-dir DIR] [--run-only] [--merge] [TARGET ...]
 #
 # Every target by default (`scripts/fuzz.sh --list` names them). Each runs N seconds (default 60)
-# on its checked-in corpus fuzz/corpus/<target>/, with its dictionary fuzz/dictionaries/ where
-# there is one; inputs it finds are kept in DIR/fuzz/<target>/corpus, and a crash, hang, leak or
+# on its checked-in corpus fuzz/corpus/<target>/ (suite_file also on the shipped suites), with its
+# dictionary fuzz/dictionaries/ where there is one; inputs it finds are kept in DIR/fuzz/<target>/corpus, and a crash, hang, leak or
 # out-of-memory input in DIR/fuzz/<target>/artifacts. --jobs J runs that many targets at once.
 # --merge adds the found inputs that reach new coverage to the checked-in corpus (libFuzzer's
 # -merge=1), for a maintainer to review and commit. The build is the clang sanitizer build (the
@@ -60,11 +60,14 @@ run_target() {
   local dict_file="fuzz/dictionaries/$t.dict"
   [ "$t" = history_row ] && dict_file=fuzz/dictionaries/results_json.dict  # rows hold results
   [ -f "$dict_file" ] && dict=("-dict=$dict_file")
+  # Shipped files that are seeds as they stand, read in place rather than copied.
+  local seeds=("fuzz/corpus/$t")
+  [ "$t" = suite_file ] && seeds+=(suites suites/figures)
   local log="$work/last-run.log"
   local status=0
   ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}" \
     "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
-    -artifact_prefix="$work/artifacts/" "${dict[@]}" "$work/corpus" "fuzz/corpus/$t" \
+    -artifact_prefix="$work/artifacts/" "${dict[@]}" "$work/corpus" "${seeds[@]}" \
     >"$log" 2>&1 || status=$?
   local runs cov
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
