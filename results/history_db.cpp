@@ -167,7 +167,7 @@ struct HistoryDatabase::Impl {
     nlohmann::ordered_json document;
     try {
       document = nlohmann::ordered_json::parse(text);
-    } catch (const nlohmann::ordered_json::parse_error&) {
+    } catch (const nlohmann::ordered_json::exception&) {  // a syntax error or a number overflow
       throw InputError(
           fmt::format("{}: the stored results are not valid JSON; append the run "
                       "again from its results.json",

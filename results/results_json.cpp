@@ -397,6 +397,12 @@ json parseFile(const fs::path& file) {
         "'{}' is not valid JSON (error at byte {}: truncated or damaged); run the suite again "
         "(`gibench run`) to rewrite it",
         file.string(), e.byte));
+  } catch (const json::out_of_range&) {
+    // A number beyond double's range (1e999): valid JSON syntax, but no file gibench writes.
+    throw InputError(fmt::format(
+        "'{}' holds a number beyond the range of a double (damaged); run the suite again "
+        "(`gibench run`) to rewrite it",
+        file.string()));
   }
 }
 

@@ -291,6 +291,35 @@ std::string openError(const fs::path& path) {
   return {};
 }
 
+// A row written by another machine or damaged on a shared disk: its stored results are outside
+// input. Found by fuzzing (fuzz/history_row_fuzzer.cpp): a number beyond a double's range escaped
+// the JSON parser as an internal error.
+TEST(HistoryDatabase, DamagedStoredResultsAreAnInputErrorNamingTheRun) {
+  test::TempDir dir;
+  const std::int64_t row = [&] {
+    HistoryDatabase db = HistoryDatabase::open(dir / "history.sqlite");
+    return db.append(historyRun("r1", "smoke", "2026-11-20T10:00:00Z", "aaa", 0.01));
+  }();
+  for (const char* stored : {R"({"schema_version": 1e999})", "{\"run\": ", ""}) {
+    sqlite3* raw = nullptr;
+    ASSERT_EQ(sqlite3_open((dir / "history.sqlite").c_str(), &raw), SQLITE_OK);
+    sqlite3_stmt* update = nullptr;
+    ASSERT_EQ(sqlite3_prepare_v2(raw, "UPDATE runs SET results_json = ?", -1, &update, nullptr),
+              SQLITE_OK);
+    sqlite3_bind_text(update, 1, stored, -1, SQLITE_TRANSIENT);
+    ASSERT_EQ(sqlite3_step(update), SQLITE_DONE);
+    sqlite3_finalize(update);
+    sqlite3_close(raw);
+    const HistoryDatabase db = HistoryDatabase::open(dir / "history.sqlite");
+    try {
+      db.run(row);
+      ADD_FAILURE() << "no error for stored results '" << stored << "'";
+    } catch (const InputError& error) {
+      EXPECT_THAT(error.what(), HasSubstr("(run " + std::to_string(row) + ")"));
+    }
+  }
+}
+
 TEST(HistoryDatabase, RefusesFilesThatAreNotOurs) {
   test::TempDir dir;
   std::ofstream(dir / "garbage.sqlite") << std::string(4096, 'x');

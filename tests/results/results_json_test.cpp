@@ -269,6 +269,19 @@ TEST(ResultsJson, TruncatedMissingAndEmptyFilesAreInputErrors) {
               HasSubstr("holds no results.json"));
 }
 
+// Found by fuzzing (fuzz/corpus/results_json/regression-number-overflow.json): a number beyond a
+// double's range is valid JSON syntax, and the parser's overflow escaped as an internal error.
+TEST(ResultsJson, ANumberBeyondDoubleRangeIsAnInputError) {
+  test::TempDir dir;
+  writeText(dir / "overflow.json", R"({"schema": "gibench-results", "schema_version": 1e999})");
+  EXPECT_THAT(inputErrorOf([&] { readResultsFile(dir / "overflow.json"); }),
+              HasSubstr("overflow.json' holds a number beyond the range of a double"));
+  EXPECT_THAT(inputErrorOf([&] { readJobFile(dir / "overflow.json"); }),
+              HasSubstr("beyond the range of a double"));
+  EXPECT_THAT(inputErrorOf([&] { readPassTimingsFile(dir / "overflow.json"); }),
+              HasSubstr("beyond the range of a double"));
+}
+
 TEST(ResultsJson, WritingLeavesNoFileWhenTheDirectoryIsMissing) {
   test::TempDir dir;
   EXPECT_THROW(writeResultsFile(dir / "absent" / "results.json", test::richResults()), InputError);
