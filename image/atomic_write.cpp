@@ -3,6 +3,9 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -58,6 +61,19 @@ void writeAtomically(const fs::path& target,
     fs::remove(temporary, ignored);
     throw;
   }
+}
+
+void writeBytesAtomically(const fs::path& target, std::span<const char> bytes) {
+  writeAtomically(target, [&](const fs::path& temporary) {
+    errno = 0;
+    std::ofstream file(temporary, std::ios::binary);
+    file.write(bytes.data(), std::streamsize(bytes.size()));
+    file.close();
+    if (file.fail())
+      throw InputError("cannot write '" + target.string() +
+                       "': " + (errno ? std::strerror(errno) : "the write failed") +
+                       "; free space on the disk or choose another place");
+  });
 }
 
 }  // namespace gib::image::detail

@@ -1,5 +1,6 @@
 #include "image/display_png.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -77,14 +78,20 @@ void writeDisplayPng(const fs::path& path, const DisplayPicture& picture) {
                                 " bytes for a picture of " + std::to_string(picture.width) + "x" +
                                 std::to_string(picture.height));
   const OIIO::ImageSpec spec(picture.width, picture.height, 3, OIIO::TypeUInt8);
-  detail::writeAtomically(path, [&](const fs::path& temporary) {
+  // Encoded into memory, then written with every I/O error checked (as writeExr does).
+  std::vector<unsigned char> encoded;
+  {
+    OIIO::Filesystem::IOVecOutput memory(encoded);
     std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create("png");
     if (!output) throw std::logic_error("OpenImageIO has no PNG writer");
-    if (!output->open(temporary.string(), spec) ||
+    if (!output->set_ioproxy(&memory)) throw std::logic_error("PNG writer without IOProxy");
+    if (!output->open(path.string(), spec) ||
         !output->write_image(OIIO::TypeUInt8, picture.rgb.data()) || !output->close())
       throw InputError("cannot write '" + path.string() + "': " + oneLine(output->geterror()) +
-                       "; check that the directory is writable and the disk has space");
-  });
+                       "; check that the directory is writable");
+  }
+  detail::writeBytesAtomically(path,
+                               {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
 }
 
 }  // namespace gib::image

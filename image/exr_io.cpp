@@ -1,9 +1,13 @@
 #include "image/exr_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <system_error>
@@ -120,6 +124,58 @@ std::string oneLine(std::string message) {
                    "; check the path and that the file is a complete OpenEXR image");
 }
 
+}  // namespace
+
+void checkExrHeaderFraming(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  const std::uintmax_t file_size = fs::file_size(path, ec);
+  if (!in || ec) throwUnreadable(path, "cannot open it");
+  const auto damaged = [&](const std::string& what) {
+    throwUnreadable(path, "its header is damaged (" + what + ")");
+  };
+  std::array<unsigned char, 8> start{};
+  if (!in.read(reinterpret_cast<char*>(start.data()), 8)) damaged("shorter than a header");
+  if (start[0] != 0x76 || start[1] != 0x2f || start[2] != 0x31 || start[3] != 0x01)
+    throwUnreadable(path, "not an OpenEXR file (wrong magic number)");
+  const bool multipart = (start[5] & 0x10) != 0;  // version flags, bit 12
+  // A NUL-terminated name of at most 255 characters; empty at the end of a header.
+  const auto readName = [&]() {
+    std::string name;
+    for (char c; in.get(c);) {
+      if (c == '\0') return name;
+      if (name.size() == 255) damaged("a name longer than 255 characters");
+      name.push_back(c);
+    }
+    damaged("it ends inside a name");
+    return name;
+  };
+  for (int header = 0;; ++header) {
+    std::string name = readName();
+    if (name.empty()) {
+      if (header == 0 && !multipart) damaged("no attributes");
+      break;  // a single-part file's header ends; in a multi-part one, the empty header
+    }
+    for (; !name.empty(); name = readName()) {
+      if (readName().empty()) damaged("attribute '" + name + "' has no type");
+      unsigned char size_bytes[4];
+      if (!in.read(reinterpret_cast<char*>(size_bytes), 4))
+        damaged("it ends inside '" + name + "'");
+      const std::uint32_t size = std::uint32_t(size_bytes[0]) | std::uint32_t(size_bytes[1]) << 8 |
+                                 std::uint32_t(size_bytes[2]) << 16 |
+                                 std::uint32_t(size_bytes[3]) << 24;
+      const auto offset = std::uintmax_t(in.tellg());
+      if (size > 0x7fffffffu || size > file_size - offset)
+        damaged("attribute '" + name + "' declares " + std::to_string(size) +
+                " bytes, more than the file holds");
+      in.seekg(std::streamoff(size), std::ios::cur);
+    }
+    if (!multipart) break;
+  }
+}
+
+namespace {
+
 // Channels of one layer in the order the Image stores them.
 struct LayerChannels {
   std::string name;
@@ -230,15 +286,21 @@ void writeExr(const fs::path& path, const std::vector<Layer>& layers, const Meta
   checkMetadata(metadata);
   const OIIO::ImageSpec spec = makeSpec(layers, metadata);
 
-  detail::writeAtomically(path, [&](const fs::path& temporary) {
-    // Named format: the temporary file's name does not end in ".exr".
+  // Encoded into memory, then written with every I/O error checked: OpenEXR writes the line offset
+  // table when the file closes, from a destructor that ignores write errors, so on a full disk a
+  // file could be left with a broken table although close() succeeded (found by
+  // scripts/faults-disk-full.sh).
+  std::vector<unsigned char> encoded;
+  {
+    OIIO::Filesystem::IOVecOutput memory(encoded);
     std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create("openexr");
     if (!output) throw std::logic_error("OpenImageIO has no OpenEXR writer");
     auto fail = [&] {
       throw InputError("cannot write '" + path.string() + "': " + oneLine(output->geterror()) +
                        "; check that the directory is writable and the disk has space");
     };
-    if (!output->open(temporary.string(), spec)) fail();
+    if (!output->set_ioproxy(&memory)) throw std::logic_error("OpenEXR writer without IOProxy");
+    if (!output->open(path.string(), spec)) fail();
     // Rows go out in bands, so a large multi-layer image is never copied whole (this keeps a
     // 1024² reference render within its memory budget).
     constexpr int kRowsPerBand = 64;
@@ -249,23 +311,35 @@ void writeExr(const fs::path& path, const std::vector<Layer>& layers, const Meta
       if (!output->write_scanlines(y0, y1, 0, OIIO::TypeFloat, band.data())) fail();
     }
     if (!output->close()) fail();
-  });
+  }
+  detail::writeBytesAtomically(path,
+                               {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
 }
 
-ExrFile readExr(const fs::path& path) {
+ExrFile readExr(const fs::path& path, std::size_t max_values) {
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (!fs::exists(status)) throwUnreadable(path, "no such file");
   if (fs::is_directory(status)) throwUnreadable(path, "it is a directory");
 
+  checkExrHeaderFraming(path);
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create("openexr");
   if (!input) throw std::logic_error("OpenImageIO has no OpenEXR reader");
   OIIO::ImageSpec spec;
   if (!input->open(path.string(), spec)) throwUnreadable(path, input->geterror());
   if (spec.deep) throwUnreadable(path, "deep EXR images are not supported");
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throwUnreadable(path, "its header declares an empty image");
+  // Checked factor by factor, so that the product cannot overflow.
+  const auto width = std::size_t(spec.width), height = std::size_t(spec.height),
+             channels = std::size_t(spec.nchannels);
+  if (width > max_values || height > max_values / width || channels > max_values / width / height)
+    throw InputError(fmt::format(
+        "cannot read '{}': its header declares {}×{} pixels of {} channels, more than gibench "
+        "reads ({} values); crop or downscale the image, or check that the file is not corrupt",
+        path.string(), width, height, channels, max_values));
 
-  std::vector<float> values(std::size_t(spec.width) * std::size_t(spec.height) *
-                            std::size_t(spec.nchannels));
+  std::vector<float> values(width * height * channels);
   if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, values.data()))
     throwUnreadable(path, input->geterror());
 
@@ -275,8 +349,8 @@ ExrFile readExr(const fs::path& path) {
   return file;
 }
 
-Image readRgb(const fs::path& path) {
-  const ExrFile file = readExr(path);
+Image readRgb(const fs::path& path, std::size_t max_values) {
+  const ExrFile file = readExr(path, max_values);
   const Image* main = file.findLayer("");
   if (!main) {
     // Without a complete R, G, B set, readExr left each of those present as a layer of its own.

@@ -2,6 +2,7 @@
 // measured image (docs/architecture.md, "Conventions", Images).
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -51,13 +52,24 @@ void writeExr(const std::filesystem::path& path, const std::vector<Layer>& layer
 // gives an RGB image). Every other channel becomes a one-channel layer named by its full channel
 // name ("Z", "normal.X"). Half and uint channels are converted to float; pixels outside the data
 // window are 0. Metadata holds the string attributes whose names follow the key rule above. A
-// missing, unreadable, truncated, deep or non-EXR file throws gib::InputError.
-ExrFile readExr(const std::filesystem::path& path);
+// missing, unreadable, truncated, deep or non-EXR file throws gib::InputError, and so does one
+// whose header declares more than `max_values` values (width × height × channels): a corrupt or
+// hostile header must not make the reader allocate without bound. The default, 2^28 values
+// (1 GiB of floats), is far above any image the harness makes (a 4K RGB image is 2^25).
+inline constexpr std::size_t kMaxExrValues = std::size_t(1) << 28;
+ExrFile readExr(const std::filesystem::path& path, std::size_t max_values = kMaxExrValues);
+
+// What readExr checks before OpenEXR reads a header: the magic number, and that every attribute's
+// name, type and declared size lie within the file (for every part of a multi-part file).
+// OpenEXR allocates an attribute at its declared size before reading it, so a damaged size field
+// (found by fuzzing: a string attribute of ~1 GB in a 1 KB file) would cost seconds and gigabytes
+// before the read failed. What the attributes mean is left to OpenEXR. Throws gib::InputError.
+void checkExrHeaderFraming(const std::filesystem::path& path);
 
 // The main layer's R, G and B channels, found by name, as a 3-channel image: alpha and every other
 // channel are left out, so an RGBA file (what Blender and most renderers write) reads like the
 // same file without alpha, and a luminance file gives grey as in readExr. Throws gib::InputError
 // naming the missing channels when the file has no R, G and B (or Y), besides readExr's errors.
-Image readRgb(const std::filesystem::path& path);
+Image readRgb(const std::filesystem::path& path, std::size_t max_values = kMaxExrValues);
 
 }  // namespace gib::image

@@ -3,8 +3,8 @@
 #include "common/input_error.h"
 #include "image/atomic_write.h"
 
-#include <unistd.h>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <fstream>
 
@@ -18,20 +18,17 @@ void checkOutputFile(const fs::path& path, std::string_view extension) {
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw InputError(fmt::format("cannot write '{}': directory '{}' does not exist; create it first",
-                                 path.string(), dir.string()));
+    throw InputError(
+        fmt::format("cannot write '{}': directory '{}' does not exist; create it first",
+                    path.string(), dir.string()));
   if (access(dir.c_str(), W_OK) != 0)
-    throw InputError(fmt::format(
-        "cannot write '{}': directory '{}' is not writable; choose another place",
-        path.string(), dir.string()));
+    throw InputError(
+        fmt::format("cannot write '{}': directory '{}' is not writable; choose another place",
+                    path.string(), dir.string()));
 }
 
 void writeTextFile(const fs::path& path, std::string_view text) {
-  detail::writeAtomically(path, [&](const fs::path& temporary) {
-    std::ofstream file(temporary, std::ios::binary);
-    file.write(text.data(), std::streamsize(text.size()));
-    if (!file.flush()) throw std::runtime_error(fmt::format("cannot write '{}'", temporary.string()));
-  });
+  detail::writeBytesAtomically(path, text);
 }
 
 }  // namespace gib::image

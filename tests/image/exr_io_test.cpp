@@ -247,6 +247,62 @@ TEST(ExrIo, ReadingTruncatedFileThrowsInputError) {
   EXPECT_THROW(readExr(dir / "cut.exr"), InputError);
 }
 
+TEST(ExrIo, AnImageOfMoreValuesThanTheCapIsRefusedBeforeItsPixelsAreRead) {
+  const test::TempDir dir;
+  writeExr(dir / "a.exr", {{"", patternImage(64, 32, 3, 1.0f)}}, {});
+  EXPECT_EQ(readExr(dir / "a.exr", 64 * 32 * 3).rgb().width(), 64);
+  try {
+    readExr(dir / "a.exr", 64 * 32 * 3 - 1);
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("64×32 pixels of 3 channels, more than gibench reads"));
+    EXPECT_THAT(error.what(), HasSubstr("a.exr"));
+  }
+}
+
+// A corrupt header that declares a huge data window over a tiny file (what fuzzing produces)
+// must be refused, not allocated: 2^20 × 2^20 RGB floats would be 12 TiB.
+TEST(ExrIo, AHeaderDeclaringAHugeImageIsAnInputError) {
+  const test::TempDir dir;
+  writeExr(dir / "small.exr", {{"", patternImage(4, 4, 3, 1.0f)}}, {});
+  std::string bytes = fileBytes(dir / "small.exr");
+  // The dataWindow attribute: its name, its type "box2i", the size 16, then xMin, yMin, xMax, yMax
+  // as little-endian int32.
+  const std::string name = std::string("dataWindow") + '\0' + "box2i" + '\0';
+  const std::size_t at = bytes.find(name);
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t box = at + name.size() + 4;
+  const std::int32_t huge = (1 << 20) - 1;
+  std::memcpy(bytes.data() + box + 8, &huge, 4);
+  std::memcpy(bytes.data() + box + 12, &huge, 4);
+  std::ofstream(dir / "huge.exr", std::ios::binary) << bytes;
+  EXPECT_THROW(readRgb(dir / "huge.exr"), InputError);
+}
+
+// Found by fuzzing (fuzz/corpus/exr/regression-attribute-size-beyond-file.exr): OpenEXR allocates
+// an attribute at its declared size before reading it, which took seconds and a gigabyte.
+TEST(ExrIo, AHeaderAttributeLargerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
+  const test::TempDir dir;
+  writeExr(dir / "small.exr", {{"", patternImage(4, 4, 3, 1.0f)}}, {{"gibench/note", "x"}});
+  EXPECT_NO_THROW(checkExrHeaderFraming(dir / "small.exr"));
+  std::string bytes = fileBytes(dir / "small.exr");
+  const std::string name = std::string("gibench/note") + '\0' + "string" + '\0';
+  const std::size_t at = bytes.find(name);
+  ASSERT_NE(at, std::string::npos);
+  const std::int32_t huge = 1 << 30;
+  std::memcpy(bytes.data() + at + name.size(), &huge, 4);
+  std::ofstream(dir / "damaged.exr", std::ios::binary) << bytes;
+  try {
+    readExr(dir / "damaged.exr");
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("attribute 'gibench/note' declares 1073741824 bytes"));
+  }
+  // Cut inside the header: the framing check names it.
+  std::ofstream(dir / "cut.exr", std::ios::binary) << bytes.substr(0, at + 5);
+  EXPECT_THROW(checkExrHeaderFraming(dir / "cut.exr"), InputError);
+}
+
 TEST(ExrIo, WritingIntoMissingDirectoryThrowsAndLeavesNoFile) {
   const test::TempDir dir;
   try {
