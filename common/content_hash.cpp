@@ -5,6 +5,10 @@
 #include <fmt/format.h>
 #include <bit>
 #include <cstring>
+#include <fstream>
+#include <vector>
+
+#include "common/input_error.h"
 
 namespace gib {
 
@@ -48,6 +52,23 @@ void ContentHasher::addString(std::string_view text) {
 std::string ContentHasher::hexDigest() const {
   XXH128_hash_t h = XXH3_128bits_digest(state(state_));
   return fmt::format("{:016x}{:016x}", h.high64, h.low64);
+}
+
+std::string hashFileContents(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(
+        fmt::format("cannot read '{}'; check that it exists and is readable", path.string()));
+  ContentHasher hasher;
+  std::vector<char> chunk(std::size_t(1) << 20);
+  while (in) {
+    in.read(chunk.data(), std::streamsize(chunk.size()));
+    hasher.addBytes(
+        {reinterpret_cast<const std::uint8_t*>(chunk.data()), std::size_t(in.gcount())});
+  }
+  if (in.bad())
+    throw InputError(fmt::format("cannot read '{}' to the end; check the disk", path.string()));
+  return hasher.hexDigest();
 }
 
 }  // namespace gib

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <string>
 #include <string_view>
@@ -31,5 +32,9 @@ class ContentHasher {
  private:
   void* state_;  // XXH3_state_t, kept out of this header.
 };
+
+// The hexDigest() of a file's bytes (fed through addBytes, so not length-prefixed). Throws
+// gib::InputError naming the file when it cannot be read.
+std::string hashFileContents(const std::filesystem::path& path);
 
 }  // namespace gib

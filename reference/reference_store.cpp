@@ -92,7 +92,20 @@ class StagingDir {
 StoredReference loadStored(const fs::path& dir) {
   StoredReference stored;
   stored.entry = readStoreEntry(dir);
-  const image::ExrFile exr = image::readExr(dir / "reference.exr");
+  const fs::path exr_path = dir / "reference.exr";
+  if (stored.entry.exr_hash.empty())
+    throw InputError(
+        fmt::format("'{}' was stored by an older gibench without a content hash, so "
+                    "it cannot be checked; it is rendered again when needed, and "
+                    "`gibench store gc` removes it",
+                    exr_path.string()));
+  if (hashFileContents(exr_path) != stored.entry.exr_hash)
+    throw InputError(
+        fmt::format("'{}' does not match the content hash in its entry.json "
+                    "(damaged); it is rendered again when needed, and `gibench "
+                    "store gc` removes damaged entries",
+                    exr_path.string()));
+  const image::ExrFile exr = image::readExr(exr_path);
   stored.mean = exr.rgb();
   if (const image::Image* variance = exr.findLayer("variance")) {
     stored.variance = *variance;
@@ -224,6 +237,7 @@ StoredReference ReferenceStore::obtain(const scene::Scene& scene, const Referenc
   addRunMetadata(metadata, result);
   metadata["gibench/store_key"] = key;
   writeReferenceOutputs(staging.path() / "reference.exr", result, metadata);
+  stored.entry.exr_hash = hashFileContents(staging.path() / "reference.exr");
   image::writeTextFile(staging.path() / "entry.json", entryToJson(stored.entry).dump(2) + "\n");
   if (std::optional<StoredReference> theirs = publish(staging, final_dir, root_, key))
     return *theirs;

@@ -55,9 +55,13 @@ struct StoreEntry {
   std::string gibench_version;
   std::string created;  // ISO 8601 UTC
   double render_seconds = 0;
+  // Content hash (common/content_hash.h) of reference.exr's bytes, checked on every read, so that
+  // a damaged image (a flipped byte, a truncated write on a full disk) is never used as ground
+  // truth. Empty in entries of an older gibench, which are therefore never current.
+  std::string exr_hash;
   std::uint64_t size_bytes = 0;  // of the entry's files
-  // Rendered by this build's renderer (an entry of another version is never a hit, but stays
-  // until gc removes it).
+  // Rendered by this build's renderer and checkable (exr_hash): an entry of another version or
+  // of the format without the hash is never a hit, but stays until gc removes it.
   bool current = false;
 };
 

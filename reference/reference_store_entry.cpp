@@ -27,10 +27,12 @@ int readBounceLimit(const ordered_json& value) {
 }
 
 StoreEntry entryFromJson(const ordered_json& j) {
-  if (j.at("format").get<std::string>() != kStoreEntryFormat)
+  const std::string format = j.at("format").get<std::string>();
+  if (format != kStoreEntryFormat && format != kStoreEntryFormatWithoutHash)
     throw std::runtime_error(
         fmt::format("format '{}' is not {}", j.at("format").dump(), kStoreEntryFormat));
   StoreEntry e;
+  if (format == kStoreEntryFormat) e.exr_hash = j.at("reference_exr_hash").get<std::string>();
   e.key = j.at("key").get<std::string>();
   const ordered_json& spec = j.at("spec");
   e.spec.scene = spec.at("scene").get<std::string>();
@@ -69,7 +71,8 @@ ordered_json entryToJson(const StoreEntry& e) {
           {"renderer_version", e.renderer_version},
           {"gibench_version", e.gibench_version},
           {"created", e.created},
-          {"render_seconds", e.render_seconds}};
+          {"render_seconds", e.render_seconds},
+          {"reference_exr_hash", e.exr_hash}};
 }
 
 StoreEntry readStoreEntry(const fs::path& dir) {
@@ -91,7 +94,7 @@ StoreEntry readStoreEntry(const fs::path& dir) {
         file.string(), entry.key, dir.filename().string()));
   entry.dir = dir;
   entry.size_bytes = directoryBytes(dir);
-  entry.current = entry.renderer_version == kReferenceRendererVersion;
+  entry.current = entry.renderer_version == kReferenceRendererVersion && !entry.exr_hash.empty();
   return entry;
 }
 

@@ -14,8 +14,10 @@
 namespace gib::ref {
 
 // entry.json's "format": bumped when a field changes meaning, so that an older gibench does not
-// misread a newer entry.
-inline constexpr const char* kStoreEntryFormat = "gibench-reference-entry/1";
+// misread a newer entry. Format 2 added "reference_exr_hash"; entries of format 1 are still read
+// (listed, collected) but are never current: without the hash their image cannot be checked.
+inline constexpr const char* kStoreEntryFormat = "gibench-reference-entry/2";
+inline constexpr const char* kStoreEntryFormatWithoutHash = "gibench-reference-entry/1";
 
 // What entry.json holds: every field of `entry` except those that describe the copy on disk
 // (dir, size_bytes, current).

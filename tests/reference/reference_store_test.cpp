@@ -239,6 +239,68 @@ TEST(ReferenceStore, DamagedEntryIsNamedByListReplacedByObtainAndCollected) {
   EXPECT_EQ(storeDirectories(dir.path()), std::set<std::string>{stored.entry.key});
 }
 
+// Damage a shared disk or a full disk can do to a stored image: whatever byte changes, or wherever
+// the file is cut, the entry is refused with one line, and obtaining it renders it again to the
+// same pixels. It is never returned as ground truth.
+TEST(ReferenceStore, ADamagedImageIsNeverUsedAsGroundTruth) {
+  TempDir dir;
+  const ReferenceSpec spec = smallReferenceSpec("cornell", 16, 4);
+  const StoredReference stored = obtainReference(dir.path(), spec);
+  const fs::path exr = stored.entry.dir / "reference.exr";
+  const std::string original = readText(exr);
+  ReferenceStore store(dir.path());
+  const auto refusedWith = [&](const std::string& damaged, const std::string& expected) {
+    test::writeFile(exr, damaged);
+    try {
+      store.find(stored.entry.key);
+      return ::testing::AssertionFailure() << "a damaged image was read as the reference";
+    } catch (const InputError& e) {
+      if (std::string(e.what()).find(expected) == std::string::npos)
+        return ::testing::AssertionFailure() << "unexpected message: " << e.what();
+    }
+    return ::testing::AssertionSuccess();
+  };
+  // Every 1/97 of the file, header and pixel data alike, one byte at a time.
+  int flips = 0;
+  for (std::size_t at = 0; at < original.size(); at += original.size() / 97 + 1, ++flips) {
+    std::string damaged = original;
+    damaged[at] = char(damaged[at] ^ 0x20);
+    EXPECT_TRUE(refusedWith(damaged, "does not match the content hash")) << "byte " << at;
+  }
+  EXPECT_GE(flips, 97);
+  for (std::size_t length :
+       {std::size_t(0), std::size_t(8), original.size() / 2, original.size() - 1})
+    EXPECT_TRUE(refusedWith(original.substr(0, length), "does not match the content hash"))
+        << "cut at " << length;
+
+  // Left damaged, it is rendered again: the same pixels, and a whole entry afterwards.
+  const StoredReference again = store.obtain(scene::loadScene("cornell"), spec);
+  EXPECT_FALSE(again.hit);
+  EXPECT_TRUE(bitIdentical(again.mean, stored.mean));
+  EXPECT_TRUE(bitIdentical(store.find(stored.entry.key)->mean, stored.mean));
+}
+
+TEST(ReferenceStore, AnEntryWithoutItsContentHashIsRenderedAgain) {
+  TempDir dir;
+  const ReferenceSpec spec = smallReferenceSpec("cornell", 16, 4);
+  const StoredReference stored = obtainReference(dir.path(), spec);
+  ReferenceStore store(dir.path());
+  // The format before the hash existed: listed, not current, never a hit.
+  test::setStoredEntryField(stored.entry, "format", kStoreEntryFormatWithoutHash);
+  ASSERT_EQ(store.list().size(), 1u);
+  EXPECT_FALSE(store.list().front().current);
+  EXPECT_THAT([&] { store.find(stored.entry.key); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("without a content hash")));
+  StoredReference again = store.obtain(scene::loadScene("cornell"), spec);
+  EXPECT_FALSE(again.hit);
+  EXPECT_TRUE(store.list().front().current);
+  // A current-format entry that lost the field is damaged, and likewise replaced.
+  test::setStoredEntryField(again.entry, "reference_exr_hash", "");
+  EXPECT_THROW(store.find(stored.entry.key), InputError);
+  EXPECT_FALSE(store.obtain(scene::loadScene("cornell"), spec).hit);
+  EXPECT_TRUE(bitIdentical(store.find(stored.entry.key)->mean, stored.mean));
+}
+
 TEST(ReferenceStore, UnwritableRootIsAnInputErrorBeforeRendering) {
   TempDir dir;
   test::writeFile(dir / "a_file", "not a directory");

@@ -1,5 +1,6 @@
 #include "support/reference_store_fixtures.h"
 
+#include "common/content_hash.h"
 #include "image/exr_io.h"
 #include "scene/builtin_scenes.h"
 
@@ -30,12 +31,18 @@ void scaleStoredMean(const ref::StoreEntry& entry, float factor) {
     if (layer.name.empty())
       for (float& v : layer.image.data()) v *= factor;
   image::writeExr(exr, file.layers, file.metadata);
+  setStoredEntryField(entry, "reference_exr_hash", hashFileContents(exr));
 }
 
 void setStoredRendererVersion(const ref::StoreEntry& entry, const std::string& version) {
+  setStoredEntryField(entry, "renderer_version", version);
+}
+
+void setStoredEntryField(const ref::StoreEntry& entry, const std::string& field,
+                         const std::string& value) {
   const std::filesystem::path path = entry.dir / "entry.json";
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(std::ifstream(path));
-  j["renderer_version"] = version;
+  j[field] = value;
   writeFile(path, j.dump(2));
 }
 
