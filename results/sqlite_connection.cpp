@@ -32,6 +32,19 @@ void checkSqlite(int code, sqlite3* db, const std::filesystem::path& file) {
     case SQLITE_PERM:
       throw InputError(fmt::format("cannot open history database '{}' ({}); choose another --db",
                                    file.string(), message));
+    case SQLITE_FULL:
+    case SQLITE_IOERR:
+      // SQLite rolls the transaction back: the file stays as it was before it.
+      throw InputError(fmt::format(
+          "cannot write history database '{}' ({}; is the disk full?); free space, choose "
+          "another --db, or run with --no-history",
+          file.string(), message));
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+      throw InputError(fmt::format(
+          "history database '{}' stayed locked by another process ({}); run again when it is "
+          "done, or choose another --db",
+          file.string(), message));
     default:
       throw std::runtime_error(fmt::format("history database '{}': {}", file.string(), message));
   }
