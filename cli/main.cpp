@@ -1,6 +1,7 @@
 // gibench: the command line of GI Bench (docs/architecture.md, "Command line").
 // Exit codes: 0 success, 1 a regression found (diff), 2 bad input, 3 an internal failure.
 #include "cli/commands.h"
+#include "common/environment_error.h"
 #include "common/input_error.h"
 #include "gib/version.h"
 
@@ -50,6 +51,10 @@ int main(int argc, char** argv) {
   } catch (const gib::InputError& e) {
     fmt::print(stderr, "gibench: {}\n", e.what());
     return 2;
+  } catch (const gib::EnvironmentError& e) {
+    // The input is fine; this machine cannot do it (a GL driver's failure): exit code 1.
+    fmt::print(stderr, "gibench: {}\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "gibench: internal error: {}\n", e.what());
     return 3;

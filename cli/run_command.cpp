@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
 
 namespace gib::cli {
@@ -149,7 +150,14 @@ int runRun(const RunCommandOptions& o) {
   }
   const suites::RunOutcome outcome = suites::runSuite(suite, options);
   printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs, o.ci), o.ci);
-  return 0;
+  if (outcome.failed == 0) return 0;
+  // Jobs this machine could not run: the others were measured and reported; one line and exit
+  // code 1, as for any environment error.
+  const auto first = std::find_if(outcome.results.jobs.begin(), outcome.results.jobs.end(),
+                                  [](const results::JobResult& job) { return job.failed(); });
+  fmt::print(stderr, "gibench: {} of {} jobs failed (first, {}: {}); the report shows them\n",
+             outcome.failed, outcome.results.jobs.size(), first->id, first->failure);
+  return 1;
 }
 
 }  // namespace

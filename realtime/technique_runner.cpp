@@ -1,5 +1,6 @@
 #include "realtime/technique_runner.h"
 
+#include "common/environment_error.h"
 #include "common/input_error.h"
 #include "realtime/gl/finished_time.h"
 #include "realtime/gl/gl.h"
@@ -79,9 +80,42 @@ void checkDeclared(const TechniqueInfo& info, const ProfileRecord& record) {
 
 }  // namespace
 
+namespace {
+
+// One line for the command line and a suite's failure record: a shader's log (several lines)
+// gives its first error; the rest is there for a developer who runs the technique's test.
+std::string firstLines(const std::string& message) {
+  const std::size_t first = message.find('\n');
+  if (first == std::string::npos) return message;
+  const std::size_t second = message.find('\n', first + 1);
+  std::string line = message.substr(0, first);
+  if (!line.empty() && line.back() == ':') line.pop_back();
+  return line + ": " +
+         message.substr(first + 1,
+                        second == std::string::npos ? std::string::npos : second - first - 1);
+}
+
+TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const TechniqueInfo& info,
+                                       const ParameterValues& parameters,
+                                       const TechniqueRunSettings& settings);
+
+}  // namespace
+
 TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& info,
                                 const ParameterValues& parameters,
                                 const TechniqueRunSettings& settings) {
+  try {
+    return runTechniqueUnnamed(scene, info, parameters, settings);
+  } catch (const EnvironmentError& e) {
+    throw EnvironmentError(fmt::format("technique '{}': {}", info.name, firstLines(e.what())));
+  }
+}
+
+namespace {
+
+TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const TechniqueInfo& info,
+                                       const ParameterValues& parameters,
+                                       const TechniqueRunSettings& settings) {
   checkSettings(settings);
   std::unique_ptr<gl::Context> context = gl::Context::create(settings.context);
   TechniqueRunResult result;
@@ -123,6 +157,8 @@ TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& 
   }
   return result;
 }
+
+}  // namespace
 
 std::map<std::string, std::string> techniqueRunMetadata(const TechniqueRunResult& r,
                                                         const TechniqueRunSettings& s) {

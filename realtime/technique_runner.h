@@ -56,7 +56,9 @@ struct TechniqueRunResult {
   gl::GlIdentity gl;
 };
 
-// Throws gib::InputError for impossible settings (no frames, a size out of range), and
+// Throws gib::InputError for impossible settings (no frames, a size out of range);
+// gib::EnvironmentError, one line beginning "technique '<name>': ", when the GL implementation
+// fails it (no context, a shader it rejects, a texture it cannot allocate); and
 // std::runtime_error listing GL errors when debug output is on and GL reported any.
 TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& info,
                                 const ParameterValues& parameters,

@@ -241,9 +241,9 @@ struct JobResult {
   double seconds = 0;    // wall time of the whole job
   std::string job_hash;  // hash of everything that defines the job (resume skips a match)
   JobExecution execution;
-  // Why the job has no result ("the GL context could not be created: …", "no result: the task
-  // was cancelled, pre-empted or crashed"); empty when it ran to the end. Only runs assembled by
-  // `gibench merge` hold failed jobs: a local run stops at its first failure.
+  // Why the job has no result ("technique 'direct': out of GPU memory …", "no result: the task
+  // was cancelled, pre-empted or crashed"); empty when it ran to the end. A local run holds
+  // failed jobs the machine could not run (gib::EnvironmentError); a merged run any that failed.
   std::string failure;
   bool operator==(const JobResult&) const = default;
 

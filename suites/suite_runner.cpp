@@ -1,6 +1,7 @@
 #include "suites/suite_runner.h"
 
 #include "common/content_hash.h"
+#include "common/environment_error.h"
 #include "common/input_error.h"
 #include "image/exr_io.h"
 #include "image/output_files.h"
@@ -123,6 +124,19 @@ std::string summaryOf(const results::JobResult& job, const std::string& metric) 
   return text;
 }
 
+// A job this machine could not run (gib::EnvironmentError: a GL driver that rejects a shader, GPU
+// memory that runs out) says nothing about the other jobs: it is recorded as failed and the run
+// goes on. Bad input and bugs stop the run.
+bool isEnvironmentFailure(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const EnvironmentError&) {
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
 // Runs the pending jobs on `workers` threads; the first failure stops the hand-out of new tasks
 // and is rethrown once the running ones have ended (the finished jobs' results are kept for a
 // resume). A job of `repeats` > 1 is several tasks: its first run (images, metrics, timings) and
@@ -165,7 +179,7 @@ class JobScheduler {
         try {
           runTask(tasks[k]);
         } catch (...) {
-          if (options_.part) {
+          if (options_.part || isEnvironmentFailure(std::current_exception())) {
             recordFailure(tasks[k].job, std::current_exception());
             continue;
           }
@@ -264,8 +278,8 @@ class JobScheduler {
     if (last) finish(task.job);
   }
 
-  // A part's job that threw: recorded as failed once (a resume runs it again), its remaining
-  // tasks skipped, the other jobs go on.
+  // A part's job that threw, or any run's job that the machine could not run: recorded as failed
+  // once (a resume runs it again), its remaining tasks skipped, the other jobs go on.
   void recordFailure(std::size_t index, std::exception_ptr error) {
     std::string message = "unknown error";
     try {
@@ -482,7 +496,15 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
     return outcome;
   }
   std::vector<results::JobResult> finished;
-  for (std::optional<results::JobResult>& result : results) finished.push_back(std::move(*result));
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    if (results[i]) {
+      finished.push_back(std::move(*results[i]));
+      continue;
+    }
+    results::JobResult failed = describeJob(prepared[i]);
+    failed.failure = dir.failure(jobs[i], prepared[i].hash).value_or("no result");
+    finished.push_back(std::move(failed));
+  }
   return assembleRun(suite, options, dir, std::move(finished), scheduler.gl(), before,
                      std::move(outcome));
 }

@@ -42,7 +42,9 @@ struct RunOptions {
   std::string job;  // exactly this job id (a Slurm task), when not empty
   // Parts of a run (a shard, a Slurm task) record their jobs, and a job that fails is recorded as
   // failed (failed.json) while the others go on; `gibench merge` assembles the whole. A whole run
-  // assembles results.json, the CSV and the history row itself and stops at its first failure.
+  // assembles results.json, the CSV and the history row itself; a job the machine cannot run
+  // (gib::EnvironmentError) is recorded as failed there too and the others go on, while bad input
+  // or an internal error stops it.
   bool part = false;
   std::string gl_device;  // empty: $GIBENCH_GL_DEVICE, else auto
   bool progress = false;  // progress bars on a terminal
@@ -58,7 +60,7 @@ struct RunOutcome {
   results::RunResults results;
   std::size_t ran = 0;      // jobs run now
   std::size_t skipped = 0;  // jobs finished by an earlier, interrupted run
-  std::size_t failed = 0;   // jobs without a result (parts and merges; a whole run throws)
+  std::size_t failed = 0;   // jobs without a result (a whole run's only by EnvironmentError)
   std::filesystem::path run_dir;
   std::filesystem::path results_file;
   std::int64_t history_row = 0;  // 0 when not recorded

@@ -1,6 +1,8 @@
 #include "realtime/gl/context.h"
 
+#include "common/environment_error.h"
 #include "common/input_error.h"
+#include "realtime/gl/fault_injection.h"
 #include "realtime/gl/gl.h"
 
 #include <EGL/egl.h>
@@ -166,6 +168,8 @@ bool debugOutputByDefault() {
 }
 
 std::unique_ptr<Context> Context::create(ContextOptions options) {
+  if (glFaultInjected(GlFault::kContext))
+    throw EnvironmentError("cannot create a GL context: injected by GIB_GL_FAULT=context");
   std::string choice = options.device;
   if (choice.empty()) {
     const char* env = std::getenv("GIBENCH_GL_DEVICE");

@@ -1,5 +1,8 @@
 #include "realtime/gl/objects.h"
 
+#include "common/environment_error.h"
+#include "realtime/gl/fault_injection.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -95,33 +98,48 @@ Texture::Texture(GLenum target, GLenum format, int width, int height, int depth,
   setWrap(GL_CLAMP_TO_EDGE);
 }
 
+// The driver reports a texture it could not allocate as GL_OUT_OF_MEMORY, and a technique drawing
+// into it would go on silently: check once, where it is made (not in a frame).
+void Texture::checkAllocated() const {
+  if (!glFaultInjected(GlFault::kTextureOutOfMemory) && glGetError() != GL_OUT_OF_MEMORY) return;
+  throw EnvironmentError(fmt::format(
+      "out of GPU memory for a {}x{}x{} texture of format 0x{:x} ({} levels); use a smaller "
+      "image or parameters, or a GPU with more memory",
+      width_, height_, depth_, format_, levels_));
+}
+
 Texture Texture::make2D(GLenum format, int width, int height, int levels) {
   Texture t(GL_TEXTURE_2D, format, width, height, 1, levels);
   glTextureStorage2D(t.id(), levels, format, width, height);
+  t.checkAllocated();
   return t;
 }
 
 Texture Texture::make2DArray(GLenum format, int width, int height, int layers, int levels) {
   Texture t(GL_TEXTURE_2D_ARRAY, format, width, height, layers, levels);
   glTextureStorage3D(t.id(), levels, format, width, height, layers);
+  t.checkAllocated();
   return t;
 }
 
 Texture Texture::make3D(GLenum format, int width, int height, int depth, int levels) {
   Texture t(GL_TEXTURE_3D, format, width, height, depth, levels);
   glTextureStorage3D(t.id(), levels, format, width, height, depth);
+  t.checkAllocated();
   return t;
 }
 
 Texture Texture::makeCube(GLenum format, int size, int levels) {
   Texture t(GL_TEXTURE_CUBE_MAP, format, size, size, 6, levels);
   glTextureStorage2D(t.id(), levels, format, size, size);
+  t.checkAllocated();
   return t;
 }
 
 Texture Texture::makeCubeArray(GLenum format, int size, int cubes, int levels) {
   Texture t(GL_TEXTURE_CUBE_MAP_ARRAY, format, size, size, 6 * cubes, levels);
   glTextureStorage3D(t.id(), levels, format, size, size, 6 * cubes);
+  t.checkAllocated();
   return t;
 }
 

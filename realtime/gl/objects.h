@@ -103,6 +103,8 @@ class Texture {
 
  private:
   Texture(GLenum target, GLenum format, int width, int height, int depth, int levels);
+  // Throws gib::EnvironmentError when the storage could not be allocated (GL_OUT_OF_MEMORY).
+  void checkAllocated() const;
   UniqueName<detail::deleteTexture> name_;
   GLenum target_ = 0;
   GLenum format_ = 0;

@@ -1,5 +1,7 @@
 #include "realtime/gl/shader_library.h"
 
+#include "realtime/gl/fault_injection.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -182,6 +184,13 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
     glCompileShader(shader);
     GLint ok = 0;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (glFaultInjected(GlFault::kShaderCompile)) {
+      cleanup();
+      throw ShaderError(
+          fmt::format("{} shader {} does not compile:\n{}: error: injected by "
+                      "GIB_GL_FAULT=shader-compile",
+                      stageName(stage.type), stage.path, stage.path));
+    }
     if (!ok) {
       GLint length = 0;
       glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "common/embedded_file.h"
+#include "common/environment_error.h"
 #include "realtime/gl/objects.h"
 
 #include <stdexcept>
@@ -24,9 +25,13 @@
 namespace gib::rt::gl {
 
 // A compile or link error; the message names the file and line of each error.
-class ShaderError : public std::runtime_error {
+// A shader that does not compile or a program that does not link, with the driver's log
+// translated to the project's file names and lines (several lines). An environment error: the
+// same sources compile on the drivers the project is tested on, so a user meets it on a driver
+// that rejects them.
+class ShaderError : public EnvironmentError {
  public:
-  using std::runtime_error::runtime_error;
+  using EnvironmentError::EnvironmentError;
 };
 
 struct ShaderStage {

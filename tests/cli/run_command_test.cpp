@@ -118,6 +118,52 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
   EXPECT_THAT(r.err, HasSubstr("[3/3] cornell-direct/shadow=pcf: done"));
 }
 
+// A GL driver that rejects the technique's shaders (injected: realtime/gl/fault_injection.h) fails
+// its jobs, not the run: the reference job is measured, the report shows the failed jobs, the
+// command ends with one line and exit code 1, no history row is written, and a resume without
+// the fault completes the run.
+TEST_F(RunCommandTest, JobsTheGlDriverCannotRunAreReportedAndTheOthersRun) {
+  const fs::path out = dir_ / "faulty";
+  const std::vector<std::string> args = {
+      "run",     suite().string(), "--out", out.string(),
+      "--store", store().string(), "--db",  (dir_ / "h.sqlite").string()};
+  const test::CommandResult r =
+      test::runGibench(args, dir_.path(), {"GIB_GL_FAULT=shader-compile"});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  std::string error_lines;
+  for (std::size_t at = r.err.find("gibench: "); at != std::string::npos;
+       at = r.err.find("gibench: ", at + 1))
+    error_lines += r.err.substr(at, r.err.find('\n', at) - at) + "\n";
+  EXPECT_EQ(test::countLines(error_lines), 1) << r.err;
+  EXPECT_THAT(error_lines,
+              HasSubstr("gibench: 2 of 3 jobs failed (first, cornell-direct/shadow=hard: "
+                        "technique 'direct': "));
+  EXPECT_THAT(error_lines, HasSubstr("does not compile"));
+
+  const results::RunResults results = results::readResultsFile(out / "results.json");
+  ASSERT_EQ(results.jobs.size(), 3u);
+  EXPECT_FALSE(results.jobs[0].failed());
+  EXPECT_TRUE(results.jobs[0].convergence.has_value());
+  for (const std::size_t i : {1u, 2u}) {
+    EXPECT_THAT(results.jobs[i].failure, HasSubstr("technique 'direct': "));
+    EXPECT_THAT(results.jobs[i].failure, Not(HasSubstr("\n")));
+  }
+  // The index marks the failed jobs; each job's page gives the cause.
+  EXPECT_NE(readText(out / "index.html").find("<div class=\"failure\">failed</div>"),
+            std::string::npos);
+  EXPECT_NE(readText(out / "report" / "cornell-direct__shadow-hard.html").find("does not compile"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "h.sqlite") &&
+               test::runGibench({"history", "--db", (dir_ / "h.sqlite").string()}, dir_.path())
+                       .out.find("tiny") != std::string::npos);
+
+  const test::CommandResult resumed = test::runGibench(args, dir_.path());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_THAT(resumed.err, HasSubstr("cornell-reference: finished by an earlier attempt"));
+  for (const results::JobResult& job : results::readResultsFile(out / "results.json").jobs)
+    EXPECT_FALSE(job.failed()) << job.id;
+}
+
 TEST_F(RunCommandTest, ALaterRunReusesTheStoredReferences) {
   ASSERT_EQ(run(dir_ / "first").exit_code, 0);
   const test::CommandResult r = run(dir_ / "second");
