@@ -33,6 +33,21 @@ int main(int argc, char** argv) {
   add(&gib::cli::addExportBlenderCommand, "export-blender");
   add(&gib::cli::addMergeCommand, "merge");
 
+  // CLI11 reports a mistyped command as "A subcommand is required", which does not name it.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+      found = found || sub->get_name() == argv[1];
+    }
+    if (!found) {
+      fmt::print(stderr,
+                 "gibench: unknown command '{}'; the commands are {} (see `gibench --help`)\n",
+                 argv[1], known);
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
