@@ -78,13 +78,9 @@ void checkDeclared(const TechniqueInfo& info, const ProfileRecord& record) {
           info.name, pass.path));
 }
 
-}  // namespace
-
-namespace {
-
 // One line for the command line and a suite's failure record: a shader's log (several lines)
 // gives its first error; the rest is there for a developer who runs the technique's test.
-std::string firstLines(const std::string& message) {
+std::string oneLineSummary(const std::string& message) {
   const std::size_t first = message.find('\n');
   if (first == std::string::npos) return message;
   const std::size_t second = message.find('\n', first + 1);
@@ -95,24 +91,7 @@ std::string firstLines(const std::string& message) {
                         second == std::string::npos ? std::string::npos : second - first - 1);
 }
 
-TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const TechniqueInfo& info,
-                                       const ParameterValues& parameters,
-                                       const TechniqueRunSettings& settings);
-
-}  // namespace
-
-TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& info,
-                                const ParameterValues& parameters,
-                                const TechniqueRunSettings& settings) {
-  try {
-    return runTechniqueUnnamed(scene, info, parameters, settings);
-  } catch (const EnvironmentError& e) {
-    throw EnvironmentError(fmt::format("technique '{}': {}", info.name, firstLines(e.what())));
-  }
-}
-
-namespace {
-
+// The run itself; runTechnique names the technique in its environment errors.
 TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const TechniqueInfo& info,
                                        const ParameterValues& parameters,
                                        const TechniqueRunSettings& settings) {
@@ -159,6 +138,16 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
 }
 
 }  // namespace
+
+TechniqueRunResult runTechnique(const scene::Scene& scene, const TechniqueInfo& info,
+                                const ParameterValues& parameters,
+                                const TechniqueRunSettings& settings) {
+  try {
+    return runTechniqueUnnamed(scene, info, parameters, settings);
+  } catch (const EnvironmentError& e) {
+    throw EnvironmentError(fmt::format("technique '{}': {}", info.name, oneLineSummary(e.what())));
+  }
+}
 
 std::map<std::string, std::string> techniqueRunMetadata(const TechniqueRunResult& r,
                                                         const TechniqueRunSettings& s) {
