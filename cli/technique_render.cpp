@@ -30,6 +30,12 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
         joinNames(foreign, ", "), info.name));
   const ParameterValues parameters =
       parseParameters(info.parameters, o.set, fmt::format("technique '{}'", info.name));
+  // As a suite refuses iterations on such a technique (suites/job_execution.cpp).
+  if (!givenOptions(app, {"--iterations"}).empty() && !info.create(parameters)->iterative())
+    throw InputError(
+        fmt::format("technique '{}' renders in one step and takes no --iterations; "
+                    "remove it (`gibench list techniques` shows the iterative ones)",
+                    info.name));
   const std::filesystem::path out(o.out);
   ref::checkOutputPath(out);
   if (!o.timings_json.empty()) image::checkOutputFile(o.timings_json, ".json");
