@@ -10,9 +10,9 @@
 #
 # Prints one line per round and a total; exits 1 when a round fails, 2 on bad arguments.
 set -euo pipefail
-here="$(cd "$(dirname "$0")" && pwd)"
-[ $# -ge 1 ] || { echo "faults-concurrent-runs.sh: give the gibench binary; see the usage at the top" >&2; exit 2; }
-gibench=$(realpath "$1")
+script=faults-concurrent-runs.sh
+source "$(dirname "$0")/faults-common.sh"
+faults_gibench "$@"
 shift
 runs=4
 rounds=3
@@ -22,14 +22,10 @@ while [ $# -gt 0 ]; do
     --runs) runs=$2; shift 2 ;;
     --rounds) rounds=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
-    *) echo "faults-concurrent-runs.sh: unknown argument '$1'; see the usage at the top" >&2; exit 2 ;;
+    *) faults_usage_error "unknown argument '$1'" ;;
   esac
 done
-if [ -z "$work" ]; then
-  work=$(mktemp -d "${TMPDIR:-/tmp}/gibench-concurrent-XXXXXX")
-  trap 'rm -rf "$work"' EXIT
-fi
-mkdir -p "$work"
+faults_work_dir concurrent
 suite="$work/concurrent.toml"
 # Four cases, five references: the Cornell box's direct-light and full references are each
 # needed by two jobs (a technique's reference and its full reference, and the reference job).
@@ -99,7 +95,7 @@ PY
   for n in $renders; do
     if [ "$n" -ne 1 ]; then problem="$problem; a reference rendered $n times (per key: $renders)"; break; fi
   done
-  recorded=$(python3 -c 'import sqlite3, sys; print(sqlite3.connect(sys.argv[1]).execute("SELECT count(*) FROM runs").fetchone()[0])' "$dir/history.sqlite")
+  recorded=$(recorded_runs "$dir/history.sqlite")
   if [ "$recorded" -ne "$runs" ]; then problem="$problem; $recorded runs recorded, not $runs"; fi
   for k in $(seq "$runs"); do
     shared=()  # the store and the database are shared: checked once

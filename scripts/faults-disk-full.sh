@@ -16,9 +16,9 @@
 #
 # Prints one line per case and a total; exits 1 when any case fails, 2 on bad arguments.
 set -euo pipefail
-here="$(cd "$(dirname "$0")" && pwd)"
-[ $# -ge 1 ] || { echo "faults-disk-full.sh: give the gibench binary; see the usage at the top" >&2; exit 2; }
-gibench=$(realpath "$1")
+script=faults-disk-full.sh
+source "$(dirname "$0")/faults-common.sh"
+faults_gibench "$@"
 shift
 limits="2 4 8 12 16 24 32 48"
 work=""
@@ -26,14 +26,10 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --limits) limits=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
-    *) echo "faults-disk-full.sh: unknown argument '$1'; see the usage at the top" >&2; exit 2 ;;
+    *) faults_usage_error "unknown argument '$1'" ;;
   esac
 done
-if [ -z "$work" ]; then
-  work=$(mktemp -d "${TMPDIR:-/tmp}/gibench-disk-full-XXXXXX")
-  trap 'rm -rf "$work"' EXIT
-fi
-mkdir -p "$work"
+faults_work_dir disk-full
 suite="$work/disk-full.toml"
 cat >"$suite" <<'TOML'
 name = "disk-full"
@@ -52,20 +48,6 @@ technique = "direct"
 scene = "cornell"
 technique = "reference"
 TOML
-
-# The metric values of every job, one "job metric value" line each, for comparing runs.
-metric_values() {
-  python3 -c '
-import json, sys
-for job in json.load(open(sys.argv[1]))["jobs"]:
-    for name, value in sorted((job.get("metrics") or {}).items()):
-        print(job["id"], name, repr(value))' "$1/results.json"
-}
-
-# The database's runs: a failed write must leave it as it was.
-recorded_runs() {
-  python3 -c 'import sqlite3, sys; print(sqlite3.connect(sys.argv[1]).execute("SELECT count(*) FROM runs").fetchone()[0])' "$1"
-}
 
 # An uninterrupted run, recorded in a database that each case with history starts from, so that
 # a cap can fall on the append of a second run as well as on the creation of the file.

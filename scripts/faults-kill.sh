@@ -15,9 +15,9 @@
 #
 # Prints one line per kill and a total; exits 1 when any kill fails, 2 on bad arguments.
 set -euo pipefail
-here="$(cd "$(dirname "$0")" && pwd)"
-[ $# -ge 1 ] || { echo "faults-kill.sh: give the gibench binary; see the usage at the top" >&2; exit 2; }
-gibench=$(realpath "$1")
+script=faults-kill.sh
+source "$(dirname "$0")/faults-common.sh"
+faults_gibench "$@"
 shift
 kills=50
 seed=1
@@ -27,14 +27,10 @@ while [ $# -gt 0 ]; do
     --kills) kills=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
-    *) echo "faults-kill.sh: unknown argument '$1'; see the usage at the top" >&2; exit 2 ;;
+    *) faults_usage_error "unknown argument '$1'" ;;
   esac
 done
-if [ -z "$work" ]; then
-  work=$(mktemp -d "${TMPDIR:-/tmp}/gibench-kill-XXXXXX")
-  trap 'rm -rf "$work"' EXIT
-fi
-mkdir -p "$work"
+faults_work_dir kill
 suite="$work/kill.toml"
 cat >"$suite" <<'TOML'
 name = "kill"
@@ -57,14 +53,6 @@ iterations = 20
 scene = "cornell"
 technique = "reference"
 TOML
-
-metric_values() {
-  python3 -c '
-import json, sys
-for job in json.load(open(sys.argv[1]))["jobs"]:
-    for name, value in sorted((job.get("metrics") or {}).items()):
-        print(job["id"], name, repr(value))' "$1/results.json"
-}
 
 start=$(date +%s.%N)
 "$gibench" run "$suite" --out "$work/baseline" --store "$work/baseline-store" \
@@ -105,7 +93,7 @@ for at in $instants; do
   elif [ "$(metric_values "$dir/out")" != "$expected" ]; then
     problem="$problem; the resumed run measured other values than an uninterrupted one"
   else
-    recorded=$(python3 -c 'import sqlite3, sys; print(sqlite3.connect(sys.argv[1]).execute("SELECT count(*) FROM runs").fetchone()[0])' "$dir/history.sqlite")
+    recorded=$(recorded_runs "$dir/history.sqlite")
     [ "$recorded" -eq 1 ] || problem="$problem; the database holds the run $recorded times"
   fi
   if [ -n "$problem" ]; then
