@@ -301,8 +301,9 @@ void writeExr(const fs::path& path, const std::vector<Layer>& layers, const Meta
     };
     if (!output->set_ioproxy(&memory)) throw std::logic_error("OpenEXR writer without IOProxy");
     if (!output->open(path.string(), spec)) fail();
-    // Rows go out in bands, so a large multi-layer image is never copied whole (this keeps a
-    // 1024² reference render within its memory budget).
+    // Rows go out in bands, so a large multi-layer image is never copied whole as floats (this
+    // keeps a 1024² reference render within its memory budget); only the compressed file is
+    // held whole, in `encoded`.
     constexpr int kRowsPerBand = 64;
     std::vector<float> band;
     for (int y0 = 0; y0 < spec.height; y0 += kRowsPerBand) {

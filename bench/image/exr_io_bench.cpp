@@ -18,51 +18,60 @@ namespace fs = std::filesystem;
 
 constexpr int kSize_px = 1024;
 
+// A directory of its own under the system's temporary directory, removed with this.
+class BenchDirectory {
+ public:
+  BenchDirectory() {
+    std::string pattern = (fs::temp_directory_path() / "gib_exr_bench.XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create " + pattern);
+    path_ = pattern;
+  }
+  ~BenchDirectory() { fs::remove_all(path_); }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// A smooth gradient, which compresses like a converged render.
+Image gradient(int size_px) {
+  Image image(size_px, size_px, 3);
+  for (int y = 0; y < size_px; ++y)
+    for (int x = 0; x < size_px; ++x)
+      for (int c = 0; c < 3; ++c) image.pixel(x, y)[c] = float(x + y * c) / float(size_px);
+  return image;
+}
+
 // Write then read one 1024×1024 RGB float32 image; items are pixels, so the rate is pixels/s
 // for the round trip.
 void BM_ExrWriteRead(benchmark::State& state) {
-  // Setup, outside the timed loop: a smooth gradient compresses like a converged render.
-  Image image(kSize_px, kSize_px, 3);
-  for (int y = 0; y < kSize_px; ++y)
-    for (int x = 0; x < kSize_px; ++x)
-      for (int c = 0; c < 3; ++c) image.pixel(x, y)[c] = float(x + y * c) / kSize_px;
-  std::string pattern = (fs::temp_directory_path() / "gib_exr_bench.XXXXXX").string();
-  if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create " + pattern);
-  const fs::path dir = pattern;
+  const Image image = gradient(kSize_px);
+  const BenchDirectory dir;
   const std::vector<Layer> layers = {{"", image}};
   const Metadata metadata = {{"gibench/benchmark", "exr_io"}};
 
   for (auto _ : state) {
-    writeExr(dir / "bench.exr", layers, metadata);
-    const ExrFile file = readExr(dir / "bench.exr");
+    writeExr(dir.path() / "bench.exr", layers, metadata);
+    const ExrFile file = readExr(dir.path() / "bench.exr");
     benchmark::DoNotOptimize(file.layers.front().image.data().data());
   }
   state.SetItemsProcessed(state.iterations() * std::int64_t(image.pixelCount()));
-  fs::remove_all(dir);
 }
 // Real time: OpenEXR compresses and decompresses on worker threads, which CPU time of the main
 // thread would not count.
 BENCHMARK(BM_ExrWriteRead)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// A file of the size given by the argument (pixels a side), written once, in a directory of its
-// own that is removed with it.
+// A file of mean and variance, `size_px` a side, written once.
 class ExrFileFixture {
  public:
   explicit ExrFileFixture(int size_px) {
-    std::string pattern = (fs::temp_directory_path() / "gib_exr_bench.XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create " + pattern);
-    dir_ = pattern;
-    Image image(size_px, size_px, 3);
-    for (int y = 0; y < size_px; ++y)
-      for (int x = 0; x < size_px; ++x)
-        for (int c = 0; c < 3; ++c) image.pixel(x, y)[c] = float(x + y * c) / float(size_px);
+    const Image image = gradient(size_px);
     writeExr(path(), {{"", image}, {"variance", image}}, {{"gibench/benchmark", "exr_io"}});
   }
-  ~ExrFileFixture() { fs::remove_all(dir_); }
-  fs::path path() const { return dir_ / "bench.exr"; }
+  fs::path path() const { return dir_.path() / "bench.exr"; }
 
  private:
-  fs::path dir_;
+  BenchDirectory dir_;
 };
 
 // Reading alone (what `gibench compare` and the reference store do), beside the header framing
