@@ -124,9 +124,48 @@ std::string oneLine(std::string message) {
                    "; check the path and that the file is a complete OpenEXR image");
 }
 
+// An attribute's little-endian 32-bit integers; `bytes` holds at least 4·count.
+std::vector<std::int64_t> littleEndianInts(const std::string& bytes, std::size_t count,
+                                           bool is_signed) {
+  std::vector<std::int64_t> values;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::uint32_t v = 0;
+    for (int b = 3; b >= 0; --b) v = v << 8 | std::uint8_t(bytes[4 * i + std::size_t(b)]);
+    values.push_back(is_signed ? std::int64_t(std::int32_t(v)) : std::int64_t(v));
+  }
+  return values;
+}
+
+// A `chlist` attribute: per channel a NUL-terminated name and 16 bytes, then an empty name.
+std::int64_t channelCount(const std::string& chlist) {
+  std::int64_t count = 0;
+  for (std::size_t at = 0; at < chlist.size() && chlist[at] != '\0'; ++count) {
+    const std::size_t end = chlist.find('\0', at);
+    if (end == std::string::npos) break;
+    at = end + 1 + 16;
+  }
+  return count;
+}
+
+// Checked factor by factor, so that the product cannot overflow.
+bool exceedsValues(std::int64_t width, std::int64_t height, std::int64_t channels,
+                   std::size_t max_values) {
+  const auto w = std::size_t(width), h = std::size_t(height), c = std::size_t(channels);
+  return w > max_values || h > max_values / w || c > max_values / w / h;
+}
+
+[[noreturn]] void throwTooLarge(const fs::path& path, const std::string& what, std::int64_t width,
+                                std::int64_t height, std::int64_t channels,
+                                std::size_t max_values) {
+  throw InputError(fmt::format(
+      "cannot read '{}': its header declares {} of {}×{} pixels of {} channels, more than gibench "
+      "reads ({} values); crop or downscale the image, or check that the file is not corrupt",
+      path.string(), what, width, height, channels, max_values));
+}
+
 }  // namespace
 
-void checkExrHeaderFraming(const fs::path& path) {
+void checkExrHeader(const fs::path& path, std::size_t max_values) {
   std::ifstream in(path, std::ios::binary);
   std::error_code ec;
   const std::uintmax_t file_size = fs::file_size(path, ec);
@@ -156,8 +195,11 @@ void checkExrHeaderFraming(const fs::path& path) {
       if (header == 0 && !multipart) damaged("no attributes");
       break;  // a single-part file's header ends; in a multi-part one, the empty header
     }
+    // The attributes that size OpenEXR's buffers; 0 where the header does not say.
+    std::int64_t width = 0, height = 0, channels = 0, tile_width = 0, tile_height = 0;
     for (; !name.empty(); name = readName()) {
-      if (readName().empty()) damaged("attribute '" + name + "' has no type");
+      const std::string type = readName();
+      if (type.empty()) damaged("attribute '" + name + "' has no type");
       unsigned char size_bytes[4];
       if (!in.read(reinterpret_cast<char*>(size_bytes), 4))
         damaged("it ends inside '" + name + "'");
@@ -168,8 +210,35 @@ void checkExrHeaderFraming(const fs::path& path) {
       if (size > 0x7fffffffu || size > file_size - offset)
         damaged("attribute '" + name + "' declares " + std::to_string(size) +
                 " bytes, more than the file holds");
-      in.seekg(std::streamoff(size), std::ios::cur);
+      const bool sizing = (name == "dataWindow" && type == "box2i" && size == 16) ||
+                          (name == "channels" && type == "chlist") ||
+                          (name == "tiles" && type == "tiledesc" && size == 9);
+      if (!sizing) {
+        in.seekg(std::streamoff(size), std::ios::cur);
+        continue;
+      }
+      std::string value(size, '\0');
+      if (!in.read(value.data(), std::streamsize(size))) damaged("it ends inside '" + name + "'");
+      if (type == "box2i") {
+        const auto box = littleEndianInts(value, 4, true);  // xMin, yMin, xMax, yMax
+        width = box[2] - box[0] + 1;
+        height = box[3] - box[1] + 1;
+      } else if (type == "chlist") {
+        channels = channelCount(value);
+      } else {
+        const auto tile = littleEndianInts(value, 2, false);  // xSize, ySize (then a mode byte)
+        tile_width = tile[0];
+        tile_height = tile[1];
+      }
     }
+    // What the attributes mean is OpenEXR's to check (an empty window, a tile of 0 pixels);
+    // the sizes are checked here, since OpenEXR allocates by them when it opens the file.
+    if (width > 0 && height > 0 && channels > 0 &&
+        exceedsValues(width, height, channels, max_values))
+      throwTooLarge(path, "an image", width, height, channels, max_values);
+    if (tile_width > 0 && tile_height > 0 && channels > 0 &&
+        exceedsValues(tile_width, tile_height, channels, max_values))
+      throwTooLarge(path, "tiles", tile_width, tile_height, channels, max_values);
     if (!multipart) break;
   }
 }
@@ -323,7 +392,7 @@ ExrFile readExr(const fs::path& path, std::size_t max_values) {
   if (!fs::exists(status)) throwUnreadable(path, "no such file");
   if (fs::is_directory(status)) throwUnreadable(path, "it is a directory");
 
-  checkExrHeaderFraming(path);
+  checkExrHeader(path, max_values);
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create("openexr");
   if (!input) throw std::logic_error("OpenImageIO has no OpenEXR reader");
   OIIO::ImageSpec spec;
@@ -331,15 +400,11 @@ ExrFile readExr(const fs::path& path, std::size_t max_values) {
   if (spec.deep) throwUnreadable(path, "deep EXR images are not supported");
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throwUnreadable(path, "its header declares an empty image");
-  // Checked factor by factor, so that the product cannot overflow.
+  // Checked again as OpenImageIO reads the header (the first part's, whatever the file's layout).
+  if (exceedsValues(spec.width, spec.height, spec.nchannels, max_values))
+    throwTooLarge(path, "an image", spec.width, spec.height, spec.nchannels, max_values);
   const auto width = std::size_t(spec.width), height = std::size_t(spec.height),
              channels = std::size_t(spec.nchannels);
-  if (width > max_values || height > max_values / width || channels > max_values / width / height)
-    throw InputError(fmt::format(
-        "cannot read '{}': its header declares {}×{} pixels of {} channels, more than gibench "
-        "reads ({} values); crop or downscale the image, or check that the file is not corrupt",
-        path.string(), width, height, channels, max_values));
-
   std::vector<float> values(width * height * channels);
   if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, values.data()))
     throwUnreadable(path, input->geterror());

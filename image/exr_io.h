@@ -59,12 +59,14 @@ void writeExr(const std::filesystem::path& path, const std::vector<Layer>& layer
 inline constexpr std::size_t kMaxExrValues = std::size_t(1) << 28;
 ExrFile readExr(const std::filesystem::path& path, std::size_t max_values = kMaxExrValues);
 
-// What readExr checks before OpenEXR reads a header: the magic number, and that every attribute's
-// name, type and declared size lie within the file (for every part of a multi-part file).
-// OpenEXR allocates an attribute at its declared size before reading it, so a damaged size field
-// (found by fuzzing: a string attribute of 788 MB in a 976-byte file) would cost seconds and memory
-// before the read failed. What the attributes mean is left to OpenEXR. Throws gib::InputError.
-void checkExrHeaderFraming(const std::filesystem::path& path);
+// What readExr checks before OpenEXR reads a header: the magic number; that every attribute's
+// name, type and declared size lie within the file; and that the data window, channel list and
+// tile size do not declare more than `max_values` values (for every part of a multi-part file).
+// OpenEXR allocates by these fields as it opens a file: an attribute at its declared size (found
+// by fuzzing: a string attribute of 788 MB in a 976-byte file cost seconds before the read
+// failed), its line and tile buffers by the data window and tile size. What the attributes mean
+// is left to OpenEXR. Throws gib::InputError.
+void checkExrHeader(const std::filesystem::path& path, std::size_t max_values = kMaxExrValues);
 
 // The main layer's R, G and B channels, found by name, as a 3-channel image: alpha and every other
 // channel are left out, so an RGBA file (what Blender and most renderers write) reads like the

@@ -260,6 +260,32 @@ TEST(ExrIo, AnImageOfMoreValuesThanTheCapIsRefusedBeforeItsPixelsAreRead) {
   }
 }
 
+// The header check applies the cap before OpenEXR opens the file, which allocates its line and
+// tile buffers by the data window and the tile size (found by fuzzing: most of the time went to
+// allocating buffers for windows that mutated headers declared).
+TEST(ExrIo, TheHeaderCheckAppliesTheCapToTheDataWindowAndTheTileSize) {
+  const test::TempDir dir;
+  writeExr(dir / "a.exr", {{"", patternImage(64, 32, 3, 1.0f)}}, {});
+  EXPECT_NO_THROW(checkExrHeader(dir / "a.exr", 64 * 32 * 3));
+  try {
+    checkExrHeader(dir / "a.exr", 64 * 32 * 3 - 1);
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("declares an image of 64×32 pixels of 3 channels"));
+  }
+  // An 8×8 image stored in one 64×64 tile: the image is within a cap of 8·8·3, the tile is not.
+  OIIO::ImageSpec spec(8, 8, 3, OIIO::TypeFloat);
+  spec.tile_width = spec.tile_height = 64;
+  writeWithOiio(dir / "tiled.exr", spec, std::vector<float>(8 * 8 * 3, 0.5f));
+  EXPECT_NO_THROW(checkExrHeader(dir / "tiled.exr", 64 * 64 * 3));
+  try {
+    readExr(dir / "tiled.exr", 8 * 8 * 3);
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("declares tiles of 64×64 pixels of 3 channels"));
+  }
+}
+
 // A corrupt header that declares a huge data window over a tiny file (what fuzzing produces)
 // must be refused, not allocated: 2^20 × 2^20 RGB floats would be 12 TiB.
 TEST(ExrIo, AHeaderDeclaringAHugeImageIsAnInputError) {
@@ -284,7 +310,7 @@ TEST(ExrIo, AHeaderDeclaringAHugeImageIsAnInputError) {
 TEST(ExrIo, AHeaderAttributeLargerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
   const test::TempDir dir;
   writeExr(dir / "small.exr", {{"", patternImage(4, 4, 3, 1.0f)}}, {{"gibench/note", "x"}});
-  EXPECT_NO_THROW(checkExrHeaderFraming(dir / "small.exr"));
+  EXPECT_NO_THROW(checkExrHeader(dir / "small.exr"));
   std::string bytes = fileBytes(dir / "small.exr");
   const std::string name = std::string("gibench/note") + '\0' + "string" + '\0';
   const std::size_t at = bytes.find(name);
@@ -300,7 +326,7 @@ TEST(ExrIo, AHeaderAttributeLargerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
   }
   // Cut inside the header: the framing check names it.
   std::ofstream(dir / "cut.exr", std::ios::binary) << bytes.substr(0, at + 5);
-  EXPECT_THROW(checkExrHeaderFraming(dir / "cut.exr"), InputError);
+  EXPECT_THROW(checkExrHeader(dir / "cut.exr"), InputError);
 }
 
 TEST(ExrIo, WritingIntoMissingDirectoryThrowsAndLeavesNoFile) {
