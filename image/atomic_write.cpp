@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "common/input_error.h"
+#include "common/stall_point.h"
 
 namespace gib::image::detail {
 namespace {
@@ -51,6 +52,7 @@ void writeAtomically(const fs::path& target,
   const fs::path temporary = temporaryPathFor(target);
   try {
     write(temporary);
+    stallPoint("write:" + target.filename().string());
     std::error_code error;
     fs::rename(temporary, target, error);
     if (error)

@@ -2,6 +2,7 @@
 
 #include "common/content_hash.h"
 #include "common/input_error.h"
+#include "common/stall_point.h"
 #include "gib/reference_renderer_version.h"
 #include "gib/version.h"
 #include "image/exr_io.h"
@@ -153,6 +154,7 @@ StoreEntry describeEntry(const scene::Scene& scene, const ReferenceSpec& spec,
 // the staging directory. A damaged entry in the way is replaced.
 std::optional<StoredReference> publish(StagingDir& staging, const fs::path& final_dir,
                                        const fs::path& root, const std::string& key) {
+  stallPoint("store-entry");
   std::error_code ec;
   fs::rename(staging.path(), final_dir, ec);
   if (!ec) {

@@ -1,6 +1,7 @@
 #include "results/history_db.h"
 
 #include "common/input_error.h"
+#include "common/stall_point.h"
 #include "results/history_filter.h"
 #include "results/results_json.h"
 #include "results/sqlite_connection.h"
@@ -217,6 +218,7 @@ std::int64_t HistoryDatabase::append(const RunResults& results) {
   insertRun(db, results, row);
   const std::int64_t inserted = row ? *row : db.lastInsertRow();
   insertJobs(db, inserted, results);
+  stallPoint("history-commit");
   transaction.commit();
   return inserted;
 }

@@ -4,7 +4,8 @@ later run, `gibench report` or `gibench store verify` would trust may be partial
 
   scripts/check-run-integrity.py GIBENCH --out DIR [--store DIR] [--db FILE] [--no-temporaries]
 
-Checks: every JSON file parses; every EXR reads to its last pixel (oiiotool); `gibench store
+Checks: every JSON file parses; every HTML page ends with </html> and every page or image it
+links inside the run directory exists; every EXR reads to its last pixel (oiiotool); `gibench store
 verify` passes on the store (each entry's image matches its content hash and a fresh render);
 the history database passes SQLite's integrity check and `gibench history` reads every run.
 With --no-temporaries, also that no temporary file of an atomic write is left (a clean error
@@ -20,12 +21,28 @@ import subprocess
 import sys
 
 TEMPORARY = re.compile(r"^\..*\.tmp-\d+-\d+$")  # image/atomic_write.cpp's temporary names
+LOCAL_LINK = re.compile(r'(?:href|src)="(?!https?:|data:|#|mailto:)([^"#?]+)')
 
 
 def files_under(root):
     for directory, _, names in os.walk(root):
         for name in names:
             yield os.path.join(directory, name)
+
+
+def html_problems(path):
+    """A page is whole, and links only to files that exist: the report writes the pages a page
+    links before the page itself (reports/html_report.cpp). The exception is the link back to the
+    run's index.html, which is written last, so that it never links a page not yet there."""
+    with open(path, encoding="utf-8", errors="replace") as f:
+        text = f.read()
+    if not text.rstrip().endswith("</html>"):
+        return [f"{path}: not a whole HTML page"]
+    directory = os.path.dirname(path)
+    return [f"{path}: links '{link}', which is not there"
+            for link in sorted(set(LOCAL_LINK.findall(text)))
+            if os.path.basename(link) != "index.html"
+            and not os.path.exists(os.path.join(directory, link))]
 
 
 def main():
@@ -53,6 +70,8 @@ def main():
                         json.load(f)
                 except (ValueError, UnicodeDecodeError) as e:
                     problems.append(f"{path}: not whole JSON ({e})")
+            elif name.endswith(".html"):
+                problems.extend(html_problems(path))
             elif name.endswith(".exr"):
                 read = subprocess.run(["oiiotool", path, "--printstats"], capture_output=True)
                 if read.returncode != 0:

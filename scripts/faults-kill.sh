@@ -1,19 +1,25 @@
 #!/usr/bin/env bash
-# `gibench run` killed at random instants (docs/reliability.md, "Faults"). Times an uninterrupted
-# run of a small suite (fresh store and database), then K times: starts the run afresh, sends it
-# SIGKILL at a uniformly random instant of that time (a fixed seed makes the instants
-# reproducible), and checks that
-#   - nothing that a later run would trust is partial (scripts/check-run-integrity.py: JSON and
-#     EXRs whole, `store verify`, the database's integrity check; temporary files of the killed
-#     writes may remain, which nothing reads and `gibench store gc` collects);
+# `gibench run` killed at random instants and inside its writes (docs/reliability.md, "Faults").
+# Times an uninterrupted run of a small suite (fresh store and database), then
+#   - K times: starts the run afresh and sends it SIGKILL at a uniformly random instant of that
+#     time (a fixed seed makes the instants reproducible);
+#   - once per write point (common/stall_point.h): starts the run afresh with GIB_STALL_AT naming
+#     the point, and sends SIGKILL when the run reports that it holds there: a temporary file
+#     complete but not yet renamed into place, a store entry staged but not published, the history
+#     rows inserted but not committed. Random instants rarely land in these writes (results,
+#     history and report take milliseconds of the run); this puts a kill inside each.
+# After each kill it checks that
+#   - nothing that a later run would trust is partial (scripts/check-run-integrity.py: JSON, HTML
+#     and EXRs whole, `store verify`, the database's integrity check; temporary files of the
+#     killed writes may remain, which nothing reads and `gibench store gc` collects);
 #   - the same command resumes the run and completes, with the metric values of the uninterrupted
 #     run, and the database then holds the run once.
-# The last line the run printed before the kill says where it was (rendering a reference, a
-# technique job, writing results, history, report).
+# For a random kill, the last line the run printed before it says where the run was.
 #
-#   scripts/faults-kill.sh GIBENCH [--kills K] [--seed S] [--work DIR]
+#   scripts/faults-kill.sh GIBENCH [--kills K] [--seed S] [--points P1,P2,…|none] [--work DIR]
 #
-# Prints one line per kill and a total; exits 1 when any kill fails, 2 on bad arguments.
+# --points defaults to every write of the suite's run (the list below). Prints one line per kill
+# and a total; exits 1 when any kill fails, 2 on bad arguments.
 set -euo pipefail
 script=faults-kill.sh
 source "$(dirname "$0")/faults-common.sh"
@@ -22,10 +28,14 @@ shift
 kills=50
 seed=1
 work=""
+points="store-entry,write:reference.exr,write:entry.json,write:image.exr,write:timings.json"
+points="$points,write:result.json,write:results.json,write:results.csv,history-commit"
+points="$points,write:*.html,write:viewer.js,write:index.html"
 while [ $# -gt 0 ]; do
   case "$1" in
     --kills) kills=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
+    --points) points=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
     *) faults_usage_error "unknown argument '$1'" ;;
   esac
@@ -68,22 +78,9 @@ print(' '.join(f'{r.uniform(0, float(sys.argv[2])):.3f}' for _ in range(int(sys.
 failed=0
 killed=0
 n=0
-for at in $instants; do
-  n=$((n + 1))
-  dir="$work/kill-$n"
-  mkdir -p "$dir"
-  args=(--out "$dir/out" --store "$dir/store" --db "$dir/history.sqlite")
-  "$gibench" run "$suite" "${args[@]}" >"$dir/run.log" 2>&1 &
-  pid=$!
-  sleep "$at"
-  where="finished before the kill"
-  if kill -9 "$pid" 2>/dev/null; then
-    killed=$((killed + 1))
-    last=$(tail -c 300 "$dir/run.log" | tr '\r' '\n' | grep . | tail -1 | cut -c1-90 || true)
-    where="killed after: ${last:-nothing printed yet}"
-  fi
-  wait "$pid" 2>/dev/null || true
-  problem=""
+# After kill number $n (described by $1), checks the run's directories, resumes it and compares.
+check_and_resume() {
+  local where=$1 dir="$work/kill-$n" problem="" integrity recorded
   if ! integrity=$(python3 "$here/check-run-integrity.py" "$gibench" --out "$dir/out" \
                      --store "$dir/store" --db "$dir/history.sqlite"); then
     problem="$problem; left damaged: $integrity"
@@ -98,11 +95,54 @@ for at in $instants; do
   fi
   if [ -n "$problem" ]; then
     failed=$((failed + 1))
-    echo "FAIL kill $n at ${at} s ($where): ${problem#; }"
+    echo "FAIL kill $n ($where): ${problem#; }"
   else
-    echo "ok   kill $n at ${at} s ($where); nothing damaged; resumed equal"
+    echo "ok   kill $n ($where); nothing damaged; resumed equal"
   fi
   rm -rf "$dir"
+}
+
+# Starts kill number $n's run in the background ($pid); the environment is the caller's.
+start_run() {
+  n=$((n + 1))
+  mkdir -p "$work/kill-$n"
+  args=(--out "$work/kill-$n/out" --store "$work/kill-$n/store" --db "$work/kill-$n/history.sqlite")
+  "$gibench" run "$suite" "${args[@]}" >"$work/kill-$n/run.log" 2>&1 &
+  pid=$!
+}
+
+for at in $instants; do
+  start_run
+  sleep "$at"
+  where="at ${at} s, finished before the kill"
+  if kill -9 "$pid" 2>/dev/null; then
+    killed=$((killed + 1))
+    last=$(tail -c 300 "$work/kill-$n/run.log" | tr '\r' '\n' | grep . | tail -1 | cut -c1-90 || true)
+    where="at ${at} s, killed after: ${last:-nothing printed yet}"
+  fi
+  wait "$pid" 2>/dev/null || true
+  check_and_resume "$where"
 done
-echo "kill -9: $kills instants over a ${duration%.*}-second run, $killed killed mid-run, $failed failed"
+
+at_points=0
+IFS=, read -ra point_list <<<"${points/#none/}"
+for point in "${point_list[@]}"; do
+  GIB_STALL_AT="$point" start_run
+  # The run holds at the point for a minute; a run that ends first never reached it.
+  while kill -0 "$pid" 2>/dev/null && ! grep -q "^gibench: stalled at " "$work/kill-$n/run.log"; do
+    sleep 0.02
+  done
+  if grep -q "^gibench: stalled at " "$work/kill-$n/run.log" && kill -9 "$pid" 2>/dev/null; then
+    wait "$pid" 2>/dev/null || true
+    at_points=$((at_points + 1))
+    check_and_resume "inside $(grep -m1 -o 'stalled at .*' "$work/kill-$n/run.log" | cut -c12-)"
+  else
+    wait "$pid" 2>/dev/null || true
+    failed=$((failed + 1))
+    echo "FAIL kill $n: the run never reached write point '$point'; name one it makes"
+    rm -rf "$work/kill-$n"
+  fi
+done
+echo "kill -9: $kills instants over a ${duration%.*}-second run ($killed killed mid-run)," \
+  "$at_points inside writes, $failed failed"
 [ "$failed" -eq 0 ]
