@@ -1,5 +1,6 @@
-# What the fault scripts (scripts/faults-*.sh) share; sourced, not run. Each script sets `script`
-# (its name, for messages) before sourcing this and then calls faults_begin "$@".
+# What the fault scripts (scripts/faults-*.sh) and scripts/verify-false-failure-rate.sh share;
+# sourced, not run. Each script sets `script` (its name, for messages) before sourcing this, then
+# calls faults_gibench "$@" and shifts the binary off.
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 

@@ -40,7 +40,7 @@ frames = 1
 warmup = 0
 metrics = ["relmse", "flip"]
 [defaults.reference]
-spp = 16
+spp = 32
 [[case]]
 scene = "cornell"
 technique = "direct"

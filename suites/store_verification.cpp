@@ -14,9 +14,11 @@
 namespace gib::suites {
 
 void checkVerifySettings(long long spp, double significance) {
-  if (spp < 2)
+  if (spp < kMinVerifySpp)
     throw InputError(fmt::format(
-        "--spp {} gives the fresh render no variance; the Z-test needs at least 2", spp));
+        "--spp {} is too few for the Z-test: below {} samples intact entries fail more often than "
+        "the significance says; give {} or more",
+        spp, kMinVerifySpp, kMinVerifySpp));
   if (!(significance > 0 && significance < 1))
     throw InputError(
         fmt::format("--significance {} is not in (0, 1); 0.01 is usual", significance));
@@ -49,6 +51,13 @@ VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::Store
   }
   if (stored->variance.pixelCount() == 0) {
     result.problem = "stored at 1 sample per pixel (one replica): no variance to test against";
+    return finish();
+  }
+  if (entry.spec.spp < kMinVerifySpp) {
+    result.problem = fmt::format(
+        "stored at {} spp, too few for the Z-test to vouch for it (it needs {}); render it again "
+        "at {} spp or more to verify it",
+        entry.spec.spp, kMinVerifySpp, kMinVerifySpp);
     return finish();
   }
 

@@ -20,13 +20,23 @@ struct VerifyResult {
   double seconds = 0;
 };
 
+// The fewest samples per pixel, of the fresh render and of the stored entry, at which the test
+// holds its significance. Below it the means of the light's edge blocks are too skewed for the t
+// approximation: measured on 300 intact 32×24 Cornell box entries each
+// (scripts/verify-false-failure-rate.sh, family-wise significance 0.01), fresh renders failed 13%
+// of them at 8 spp, 4.7% at 16 and 2% at 24, against 0.7% at 32, 1.3% at 64 and 1% at 128; entries
+// stored at 16 spp failed 6% at 64 spp, entries stored at 32 spp 0.3% (docs/harness.md).
+inline constexpr long long kMinVerifySpp = 32;
+
 // Throws gib::InputError naming --spp or --significance when a verification with these settings
-// could conclude nothing: fewer than two samples (no variance), a significance outside (0, 1).
+// would not hold its significance: fewer than kMinVerifySpp samples, a significance outside
+// (0, 1).
 void checkVerifySettings(long long spp, double significance);
 
 // Re-renders the entry's scene at `spp` samples with a seed of its own and Z-tests it against the
 // stored mean and variance at family-wise `significance` (metrics/z_test.h): a changed renderer
-// or scene fails. Throws gib::InputError for bad settings and when the scene cannot be loaded.
+// or scene fails, and so does an entry stored at fewer than kMinVerifySpp samples, which the test
+// cannot vouch for. Throws gib::InputError for bad settings and when the scene cannot be loaded.
 VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
                               std::uint32_t spp, double significance = 0.01, bool progress = false);
 

@@ -28,7 +28,7 @@ struct FilledStore {
   explicit FilledStore(const TempDir& dir)
       : root(dir / "store"),
         cornell(obtainReference(root, smallReferenceSpec("cornell", 24, 64))),
-        furnace(obtainReference(root, smallReferenceSpec("furnace", 16, 16))) {}
+        furnace(obtainReference(root, smallReferenceSpec("furnace", 16, 32))) {}
   fs::path root;
   ref::StoredReference cornell, furnace;
 };

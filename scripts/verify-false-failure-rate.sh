@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# How often `gibench store verify` fails an intact entry (docs/harness.md, "The reference store"):
+# stores N references of one scene that differ only in their seed (so each is an independent,
+# intact entry), verifies every one at each fresh-render spp given, and prints the failures. At
+# family-wise significance α an intact entry should fail with probability at most α; the counts
+# are binomial, so 4 of 300 at α = 0.01 is within expectation (one-sided binomial p 0.35).
+#
+#   scripts/verify-false-failure-rate.sh GIBENCH [--entries N] [--scene S] [--size WxH]
+#       [--stored-spp S] [--verify-spp "32 64 128"] [--significance A] [--work DIR]
+#
+# Prints one line per verify spp; exits 2 on bad arguments.
+set -euo pipefail
+script=verify-false-failure-rate.sh
+source "$(dirname "$0")/faults-common.sh"
+faults_gibench "$@"
+shift
+entries=100
+scene=cornell
+size=32x24
+stored_spp=64
+verify_spp="32 64 128"
+significance=0.01
+work=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --entries) entries=$2; shift 2 ;;
+    --scene) scene=$2; shift 2 ;;
+    --size) size=$2; shift 2 ;;
+    --stored-spp) stored_spp=$2; shift 2 ;;
+    --verify-spp) verify_spp=$2; shift 2 ;;
+    --significance) significance=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    *) faults_usage_error "unknown argument '$1'" ;;
+  esac
+done
+[[ "$entries" =~ ^[1-9][0-9]*$ ]] || faults_usage_error "--entries takes a positive integer"
+[[ "$size" =~ ^[1-9][0-9]*x[1-9][0-9]*$ ]] || faults_usage_error "--size takes WxH, e.g. 32x24"
+faults_work_dir verify-rate
+
+# One suite, one reference case per seed: the run stores N entries.
+suite="$work/entries.toml"
+{
+  echo "name = \"verify-rate\""
+  echo "[defaults]"
+  echo "width = ${size%x*}"
+  echo "height = ${size#*x}"
+  echo "metrics = [\"relmse\"]"
+  for seed in $(seq 1 "$entries"); do
+    echo "[[case]]"
+    echo "name = \"seed-$seed\""
+    echo "scene = \"$scene\""
+    echo "technique = \"reference\""
+    echo "reference = { spp = $stored_spp, seed = $seed }"
+  done
+} >"$suite"
+"$gibench" run "$suite" --out "$work/run" --store "$work/store" --no-history >"$work/run.log" 2>&1 ||
+  { tail -3 "$work/run.log" >&2; exit 1; }
+
+for spp in $verify_spp; do
+  summary=$("$gibench" store verify --store "$work/store" --spp "$spp" \
+              --significance "$significance" | tail -1 || true)
+  failed=$(grep -o '[0-9]* failed' <<<"$summary" | grep -o '[0-9]*')
+  echo "$scene $size stored at $stored_spp spp, verified at $spp spp: $failed of $entries" \
+    "intact entries failed (significance $significance)"
+done
