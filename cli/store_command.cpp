@@ -36,6 +36,7 @@ struct StoreOptions {
   std::vector<std::string> prefixes;  // verify: the entries to verify; gc: --keep
   int spp = 64;
   double significance = 0.01;
+  bool allow_few_samples = false;  // verify: measure below kMinVerifySpp
   bool dry_run = false;
 };
 
@@ -141,12 +142,16 @@ int runList(const StoreOptions& o) {
 
 // --- store verify ----------------------------------------------------------------------------
 
+long long minSpp(const StoreOptions& o) {
+  return o.allow_few_samples ? 2 : suites::kMinVerifySpp;
+}
+
 // A scene that no longer loads (a moved scene file) fails its entry rather than the command.
 suites::VerifyResult verifyEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
                                  const StoreOptions& o) {
   try {
     return suites::verifyStoreEntry(store, entry, std::uint32_t(o.spp), o.significance,
-                                    /*progress=*/true);
+                                    /*progress=*/true, minSpp(o));
   } catch (const InputError& e) {
     suites::VerifyResult failed;
     failed.key = entry.key;
@@ -157,7 +162,7 @@ suites::VerifyResult verifyEntry(const ref::ReferenceStore& store, const ref::St
 
 int runVerify(const StoreOptions& o) {
   // Before anything is read: bad settings are one error, not one failure per entry.
-  suites::checkVerifySettings(o.spp, o.significance);
+  suites::checkVerifySettings(o.spp, o.significance, minSpp(o));
   const ref::ReferenceStore store = openStore(o);
   std::vector<ref::StoreEntry> entries = store.list();
   if (!o.prefixes.empty()) {
@@ -273,6 +278,9 @@ CommandRunner addStoreCommand(CLI::App& app) {
                    "family-wise significance: the chance that an intact entry fails")
       ->capture_default_str();
   verify->add_flag("--json", o->json, "print one JSON object instead of lines");
+  verify->add_flag("--allow-few-samples", o->allow_few_samples,
+                   "test below 32 spp on either side, where the significance does not hold (to "
+                   "measure that, as scripts/verify-false-failure-rate.sh does)");
 
   CLI::App* gc = addStoreSubcommand(
       *store, "gc", "Remove entries no run uses and the debris of interrupted writes", *o);

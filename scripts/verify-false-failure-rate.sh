@@ -8,7 +8,7 @@
 #   scripts/verify-false-failure-rate.sh GIBENCH [--entries N] [--scene S] [--size WxH]
 #       [--stored-spp S] [--verify-spp "32 64 128"] [--significance A] [--work DIR]
 #
-# Prints one line per verify spp; exits 2 on bad arguments.
+# Prints one line per verify spp; exits 1 when an entry was not verified, 2 on bad arguments.
 set -euo pipefail
 script=verify-false-failure-rate.sh
 source "$(dirname "$0")/faults-common.sh"
@@ -57,9 +57,15 @@ suite="$work/entries.toml"
   { tail -3 "$work/run.log" >&2; exit 1; }
 
 for spp in $verify_spp; do
-  summary=$("$gibench" store verify --store "$work/store" --spp "$spp" \
+  # --allow-few-samples: below 32 spp is what this script measures.
+  summary=$("$gibench" store verify --store "$work/store" --spp "$spp" --allow-few-samples \
               --significance "$significance" | tail -1 || true)
-  failed=$(grep -o '[0-9]* failed' <<<"$summary" | grep -o '[0-9]*')
-  echo "$scene $size stored at $stored_spp spp, verified at $spp spp: $failed of $entries" \
+  failed=$(grep -o '[0-9]* failed' <<<"$summary" | grep -o '[0-9]*' || true)
+  verified=$(grep -o '^[0-9]* verified' <<<"$summary" | grep -o '[0-9]*' || true)
+  if [ "${verified:-0}" != "$entries" ]; then
+    echo "$script: store verify verified ${verified:-no} entries of $entries: $summary" >&2
+    exit 1
+  fi
+  echo "$scene $size stored at $stored_spp spp, verified at $spp spp: $failed of $verified" \
     "intact entries failed (significance $significance)"
 done

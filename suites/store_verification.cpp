@@ -9,24 +9,26 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace gib::suites {
 
-void checkVerifySettings(long long spp, double significance) {
-  if (spp < kMinVerifySpp)
+void checkVerifySettings(long long spp, double significance, long long min_spp) {
+  if (spp < std::max(min_spp, 2LL))
     throw InputError(fmt::format(
         "--spp {} is too few for the Z-test: below {} samples intact entries fail more often than "
         "the significance says; give {} or more",
-        spp, kMinVerifySpp, kMinVerifySpp));
+        spp, std::max(min_spp, 2LL), std::max(min_spp, 2LL)));
   if (!(significance > 0 && significance < 1))
     throw InputError(
         fmt::format("--significance {} is not in (0, 1); 0.01 is usual", significance));
 }
 
 VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
-                              std::uint32_t spp, double significance, bool progress) {
-  checkVerifySettings(spp, significance);
+                              std::uint32_t spp, double significance, bool progress,
+                              long long min_spp) {
+  checkVerifySettings(spp, significance, min_spp);
   const auto start = std::chrono::steady_clock::now();
   VerifyResult result;
   result.key = entry.key;
@@ -53,11 +55,11 @@ VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::Store
     result.problem = "stored at 1 sample per pixel (one replica): no variance to test against";
     return finish();
   }
-  if (entry.spec.spp < kMinVerifySpp) {
+  if (entry.spec.spp < min_spp) {
     result.problem = fmt::format(
         "stored at {} spp, too few for the Z-test to vouch for it (it needs {}); render it again "
         "at {} spp or more to verify it",
-        entry.spec.spp, kMinVerifySpp, kMinVerifySpp);
+        entry.spec.spp, min_spp, min_spp);
     return finish();
   }
 

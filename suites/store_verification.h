@@ -29,15 +29,17 @@ struct VerifyResult {
 inline constexpr long long kMinVerifySpp = 32;
 
 // Throws gib::InputError naming --spp or --significance when a verification with these settings
-// would not hold its significance: fewer than kMinVerifySpp samples, a significance outside
-// (0, 1).
-void checkVerifySettings(long long spp, double significance);
+// would not hold its significance: fewer than `min_spp` samples, a significance outside (0, 1).
+// `min_spp` is kMinVerifySpp but for measuring the floor itself (`--allow-few-samples`), where it
+// is 2, the fewest with a variance.
+void checkVerifySettings(long long spp, double significance, long long min_spp = kMinVerifySpp);
 
 // Re-renders the entry's scene at `spp` samples with a seed of its own and Z-tests it against the
 // stored mean and variance at family-wise `significance` (metrics/z_test.h): a changed renderer
-// or scene fails, and so does an entry stored at fewer than kMinVerifySpp samples, which the test
+// or scene fails, and so does an entry stored at fewer than `min_spp` samples, which the test
 // cannot vouch for. Throws gib::InputError for bad settings and when the scene cannot be loaded.
 VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::StoreEntry& entry,
-                              std::uint32_t spp, double significance = 0.01, bool progress = false);
+                              std::uint32_t spp, double significance = 0.01, bool progress = false,
+                              long long min_spp = kMinVerifySpp);
 
 }  // namespace gib::suites
