@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
 
 #include "common/input_error.h"
@@ -136,14 +138,56 @@ std::vector<std::int64_t> littleEndianInts(const std::string& bytes, std::size_t
   return values;
 }
 
-// A `chlist` attribute: per channel a NUL-terminated name and 16 bytes, then an empty name.
-std::int64_t channelCount(const std::string& chlist) {
+// The size of an attribute type that OpenEXR reads field by field, whatever size the attribute
+// declares; 0 for the types that it reads by their declared size (string, vectors, unknown types)
+// or that hold their own lengths (chlist, preview; checked by what they hold).
+std::uint32_t fixedAttributeSize(const std::string& type) {
+  static const std::array<std::pair<std::string_view, std::uint32_t>, 24> kSizes = {{
+      {"box2i", 16},
+      {"box2f", 16},
+      {"chromaticities", 32},
+      {"compression", 1},
+      {"deepImageState", 1},
+      {"double", 8},
+      {"envmap", 1},
+      {"float", 4},
+      {"int", 4},
+      {"keycode", 28},
+      {"lineOrder", 1},
+      {"m33d", 72},
+      {"m33f", 36},
+      {"m44d", 128},
+      {"m44f", 64},
+      {"rational", 8},
+      {"tiledesc", 9},
+      {"timecode", 8},
+      {"v2d", 16},
+      {"v2f", 8},
+      {"v2i", 8},
+      {"v3d", 24},
+      {"v3f", 12},
+      {"v3i", 12},
+  }};
+  for (const auto& [name, size] : kSizes)
+    if (type == name) return size;
+  return 0;
+}
+
+// A `chlist` attribute as OpenEXR reads it: per channel a NUL-terminated name of at most 255
+// characters and 16 bytes, until an empty name. OpenEXR reads until that empty name, not by the
+// declared size, so a list that ends elsewhere than at the declared size would make OpenEXR read
+// the rest of the header from another place than this check does. The number of channels, or
+// none when the list does not end exactly at the declared size.
+std::optional<std::int64_t> framedChannelCount(const std::string& chlist) {
   std::int64_t count = 0;
-  for (std::size_t at = 0; at < chlist.size() && chlist[at] != '\0'; ++count) {
+  std::size_t at = 0;
+  while (at < chlist.size() && chlist[at] != '\0') {
     const std::size_t end = chlist.find('\0', at);
-    if (end == std::string::npos) break;
+    if (end == std::string::npos || end - at > 255) return std::nullopt;
     at = end + 1 + 16;
+    ++count;
   }
+  if (at + 1 != chlist.size()) return std::nullopt;  // the empty name is the last byte
   return count;
 }
 
@@ -210,21 +254,39 @@ void checkExrHeader(const fs::path& path, std::size_t max_values) {
       if (size > 0x7fffffffu || size > file_size - offset)
         damaged("attribute '" + name + "' declares " + std::to_string(size) +
                 " bytes, more than the file holds");
-      const bool sizing = (name == "dataWindow" && type == "box2i" && size == 16) ||
-                          (name == "channels" && type == "chlist") ||
-                          (name == "tiles" && type == "tiledesc" && size == 9);
-      if (!sizing) {
+      // OpenEXR reads these by what they hold rather than by the declared size: a size that
+      // disagrees would put its reading elsewhere in the file than this walk (found by fuzzing:
+      // a channel list longer than its size hid, from this check, an attribute of a gigabyte).
+      const std::uint32_t fixed = fixedAttributeSize(type);
+      if (fixed != 0 && size != fixed)
+        damaged("attribute '" + name + "' declares " + std::to_string(size) + " bytes; a " + type +
+                " holds " + std::to_string(fixed));
+      const bool read = type == "chlist" || type == "preview" ||
+                        (name == "dataWindow" && type == "box2i") ||
+                        (name == "tiles" && type == "tiledesc");
+      if (!read) {
         in.seekg(std::streamoff(size), std::ios::cur);
         continue;
       }
       std::string value(size, '\0');
       if (!in.read(value.data(), std::streamsize(size))) damaged("it ends inside '" + name + "'");
-      if (type == "box2i") {
+      if (type == "chlist") {
+        const std::optional<std::int64_t> count = framedChannelCount(value);
+        if (!count)
+          damaged("attribute '" + name + "': its channel list does not end at its size, " +
+                  std::to_string(size) + " bytes");
+        if (name == "channels") channels = *count;
+      } else if (type == "preview") {
+        // Width and height, then 4 bytes per pixel, which OpenEXR allocates by the two numbers.
+        const auto extent =
+            size >= 8 ? littleEndianInts(value, 2, false) : std::vector<std::int64_t>{-1, -1};
+        if (size < 8 || std::uint64_t(extent[0]) * std::uint64_t(extent[1]) * 4 + 8 != size)
+          damaged("attribute '" + name + "': its preview image does not fill its size, " +
+                  std::to_string(size) + " bytes");
+      } else if (type == "box2i") {
         const auto box = littleEndianInts(value, 4, true);  // xMin, yMin, xMax, yMax
         width = box[2] - box[0] + 1;
         height = box[3] - box[1] + 1;
-      } else if (type == "chlist") {
-        channels = channelCount(value);
       } else {
         const auto tile = littleEndianInts(value, 2, false);  // xSize, ySize (then a mode byte)
         tile_width = tile[0];

@@ -60,7 +60,9 @@ inline constexpr std::size_t kMaxExrValues = std::size_t(1) << 28;
 ExrFile readExr(const std::filesystem::path& path, std::size_t max_values = kMaxExrValues);
 
 // What readExr checks before OpenEXR reads a header: the magic number; that every attribute's
-// name, type and declared size lie within the file; and that the data window, channel list and
+// name, type and declared size lie within the file, and that the attributes OpenEXR reads by
+// what they hold (fixed-size types, channel lists, previews) hold exactly their declared size, so
+// that OpenEXR reads the header where this walk does; and that the data window, channel list and
 // tile size do not declare more than `max_values` values (for every part of a multi-part file).
 // OpenEXR allocates by these fields as it opens a file: an attribute at its declared size (found
 // by fuzzing: a string attribute of 788 MB in a 976-byte file cost seconds before the read

@@ -260,6 +260,42 @@ TEST(ExrIo, AnImageOfMoreValuesThanTheCapIsRefusedBeforeItsPixelsAreRead) {
   }
 }
 
+// Found by fuzzing (fuzz/corpus/exr/regression-channel-list-beyond-its-size.exr): OpenEXR reads a
+// channel list up to its empty name and a fixed-size attribute by its fields, whatever size they
+// declare. A size that disagrees put OpenEXR's reading of the header elsewhere than the check's
+// walk, which then missed an attribute declaring a gigabyte (7 s per read under the sanitizers).
+TEST(ExrIo, AnAttributeWhoseContentDisagreesWithItsSizeIsRefused) {
+  const test::TempDir dir;
+  writeExr(dir / "a.exr", {{"", patternImage(4, 4, 3, 1.0f)}}, {});
+  const std::string bytes = fileBytes(dir / "a.exr");
+  const auto withSize = [&](const std::string& attribute, std::int32_t size) {
+    std::string changed = bytes;
+    const std::size_t at = changed.find(attribute);
+    EXPECT_NE(at, std::string::npos) << attribute;
+    std::memcpy(changed.data() + at + attribute.size(), &size, 4);
+    std::ofstream(dir / "changed.exr", std::ios::binary) << changed;
+    return dir / "changed.exr";
+  };
+  const std::string channels = std::string("channels") + '\0' + "chlist" + '\0';
+  std::int32_t list_size = 0;
+  std::memcpy(&list_size, bytes.data() + bytes.find(channels) + channels.size(), 4);
+  EXPECT_NO_THROW(checkExrHeader(withSize(channels, list_size)));
+  for (const std::int32_t size : {list_size - 1, list_size - 18}) {
+    try {
+      checkExrHeader(withSize(channels, size));
+      FAIL() << "no exception at size " << size;
+    } catch (const InputError& error) {
+      EXPECT_THAT(error.what(), HasSubstr("attribute 'channels': its channel list does not end"));
+    }
+  }
+  try {
+    checkExrHeader(withSize(std::string("dataWindow") + '\0' + "box2i" + '\0', 17));
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("'dataWindow' declares 17 bytes; a box2i holds 16"));
+  }
+}
+
 // The header check applies the cap before OpenEXR opens the file, which allocates its line and
 // tile buffers by the data window and the tile size (found by fuzzing: most of the time went to
 // allocating buffers for windows that mutated headers declared).
