@@ -240,7 +240,8 @@ void checkExrHeader(const fs::path& path, std::size_t max_values) {
       break;  // a single-part file's header ends; in a multi-part one, the empty header
     }
     // The attributes that size OpenEXR's buffers; 0 where the header does not say.
-    std::int64_t width = 0, height = 0, channels = 0, tile_width = 0, tile_height = 0;
+    std::int64_t width = 0, height = 0, channels = 0, tile_width = 0, tile_height = 0,
+                 display_width = 0, display_height = 0;
     for (; !name.empty(); name = readName()) {
       const std::string type = readName();
       if (type.empty()) damaged("attribute '" + name + "' has no type");
@@ -262,7 +263,7 @@ void checkExrHeader(const fs::path& path, std::size_t max_values) {
         damaged("attribute '" + name + "' declares " + std::to_string(size) + " bytes; a " + type +
                 " holds " + std::to_string(fixed));
       const bool read = type == "chlist" || type == "preview" ||
-                        (name == "dataWindow" && type == "box2i") ||
+                        ((name == "dataWindow" || name == "displayWindow") && type == "box2i") ||
                         (name == "tiles" && type == "tiledesc");
       if (!read) {
         in.seekg(std::streamoff(size), std::ios::cur);
@@ -285,8 +286,8 @@ void checkExrHeader(const fs::path& path, std::size_t max_values) {
                   std::to_string(size) + " bytes");
       } else if (type == "box2i") {
         const auto box = littleEndianInts(value, 4, true);  // xMin, yMin, xMax, yMax
-        width = box[2] - box[0] + 1;
-        height = box[3] - box[1] + 1;
+        (name == "dataWindow" ? width : display_width) = box[2] - box[0] + 1;
+        (name == "dataWindow" ? height : display_height) = box[3] - box[1] + 1;
       } else {
         const auto tile = littleEndianInts(value, 2, false);  // xSize, ySize (then a mode byte)
         tile_width = tile[0];
@@ -301,6 +302,11 @@ void checkExrHeader(const fs::path& path, std::size_t max_values) {
     if (tile_width > 0 && tile_height > 0 && channels > 0 &&
         exceedsValues(tile_width, tile_height, channels, max_values))
       throwTooLarge(path, "tiles", tile_width, tile_height, channels, max_values);
+    // The layers are images of the display window (readExr), which may be far larger than the
+    // data window (found by fuzzing: 24×16 pixels of data in a window 16 776 208 high).
+    if (display_width > 0 && display_height > 0 && channels > 0 &&
+        exceedsValues(display_width, display_height, channels, max_values))
+      throwTooLarge(path, "a display window", display_width, display_height, channels, max_values);
     if (!multipart) break;
   }
 }
@@ -472,7 +478,17 @@ ExrFile readExr(const fs::path& path, std::size_t max_values) {
     throwUnreadable(path, input->geterror());
 
   ExrFile file;
-  file.layers = scatter(spec, values, groupChannels(spec.channelnames));
+  // The layers hold the display window, luminance widened to grey: checked as they are sized.
+  const std::vector<LayerChannels> groups = groupChannels(spec.channelnames);
+  std::size_t layer_channels = 0;
+  for (const LayerChannels& group : groups) layer_channels += group.indices.size();
+  if (spec.full_width <= 0 || spec.full_height <= 0)
+    throwUnreadable(path, "its header declares an empty display window");
+  if (layer_channels > 0 &&
+      exceedsValues(spec.full_width, spec.full_height, std::int64_t(layer_channels), max_values))
+    throwTooLarge(path, "a display window", spec.full_width, spec.full_height,
+                  std::int64_t(layer_channels), max_values);
+  file.layers = scatter(spec, values, groups);
   file.metadata = readMetadata(spec);
   return file;
 }

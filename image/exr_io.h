@@ -53,8 +53,9 @@ void writeExr(const std::filesystem::path& path, const std::vector<Layer>& layer
 // name ("Z", "normal.X"). Half and uint channels are converted to float; pixels outside the data
 // window are 0. Metadata holds the string attributes whose names follow the key rule above. A
 // missing, unreadable, truncated, deep or non-EXR file throws gib::InputError, and so does one
-// whose header declares more than `max_values` values (width × height × channels): a corrupt or
-// hostile header must not make the reader allocate without bound. The default, 2^28 values
+// whose header declares more than `max_values` values (width × height × channels, of the data
+// window as read and of the display window as held): a corrupt or hostile header must not make
+// the reader allocate without bound. The default, 2^28 values
 // (1 GiB of floats), is far above any image the harness makes (a 4K RGB image is 2^25).
 inline constexpr std::size_t kMaxExrValues = std::size_t(1) << 28;
 ExrFile readExr(const std::filesystem::path& path, std::size_t max_values = kMaxExrValues);
@@ -63,7 +64,8 @@ ExrFile readExr(const std::filesystem::path& path, std::size_t max_values = kMax
 // name, type and declared size lie within the file, and that the attributes OpenEXR reads by
 // what they hold (fixed-size types, channel lists, previews) hold exactly their declared size, so
 // that OpenEXR reads the header where this walk does; and that the data window, channel list and
-// tile size do not declare more than `max_values` values (for every part of a multi-part file).
+// tile size, and the display window with the channel list, do not declare more than `max_values`
+// values (for every part of a multi-part file).
 // OpenEXR allocates by these fields as it opens a file: an attribute at its declared size (found
 // by fuzzing: a string attribute of 788 MB in a 976-byte file cost seconds before the read
 // failed), its line and tile buffers by the data window and tile size. What the attributes mean

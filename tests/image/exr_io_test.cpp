@@ -322,6 +322,30 @@ TEST(ExrIo, TheHeaderCheckAppliesTheCapToTheDataWindowAndTheTileSize) {
   }
 }
 
+// Found by fuzzing (fuzz/corpus/exr/regression-display-window-beyond-the-cap.exr): the layers
+// are images of the display window, so 24×16 pixels of data in a window 16 776 208 high made the
+// reader allocate 4.8 GB after the data window had passed the cap.
+TEST(ExrIo, ADisplayWindowBeyondTheCapIsRefusedThoughItsDataWindowIsSmall) {
+  const test::TempDir dir;
+  OIIO::ImageSpec spec(8, 8, 3, OIIO::TypeFloat);
+  spec.full_width = 8;
+  spec.full_height = 1024;
+  writeWithOiio(dir / "tall.exr", spec, std::vector<float>(8 * 8 * 3, 0.5f));
+  const std::size_t cap = 8 * 1024 * 3 - 1;  // the data window's 192 values are within it
+  for (const bool header_only : {true, false}) {
+    try {
+      if (header_only)
+        checkExrHeader(dir / "tall.exr", cap);
+      else
+        readExr(dir / "tall.exr", cap);
+      FAIL() << "no exception";
+    } catch (const InputError& error) {
+      EXPECT_THAT(error.what(), HasSubstr("declares a display window of 8×1024 pixels"));
+    }
+  }
+  EXPECT_EQ(readExr(dir / "tall.exr", cap + 1).rgb().height(), 1024);
+}
+
 // A corrupt header that declares a huge data window over a tiny file (what fuzzing produces)
 // must be refused, not allocated: 2^20 × 2^20 RGB floats would be 12 TiB.
 TEST(ExrIo, AHeaderDeclaringAHugeImageIsAnInputError) {
