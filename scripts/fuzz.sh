@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Builds and runs the libFuzzer targets of fuzz/ (docs/reliability.md, "Fuzzing").
 #
-#   scripts/fuzz.sh [--seconds N] [--jobs J] [--build-dir DIR] [--run-only] [--merge] [TARGET ...]
+#   scripts/fuzz.sh [--seconds N] [--jobs J] [--fork W] [--build-dir DIR] [--run-only] [--merge]
+#                   [TARGET ...]
 #
 # Every target by default (`scripts/fuzz.sh --list` names them). Each runs N seconds (default 60)
 # on its checked-in corpus fuzz/corpus/<target>/ (suite_file also on the shipped suites), with its
 # dictionary fuzz/dictionaries/ where there is one; inputs it finds are kept in DIR/fuzz/<target>/corpus, and a crash, hang, leak or
-# out-of-memory input in DIR/fuzz/<target>/artifacts. --jobs J runs that many targets at once.
+# out-of-memory input in DIR/fuzz/<target>/artifacts. --jobs J runs that many targets at once;
+# --fork W runs each target in W worker processes (libFuzzer's -fork=W), for a slow target.
 # --merge adds the found inputs that reach new coverage to the checked-in corpus (libFuzzer's
 # -merge=1), for a maintainer to review and commit. The build is the clang sanitizer build (the
 # asan preset, build/asan) unless --build-dir names another; --run-only skips building.
@@ -17,6 +19,7 @@ cd "$(dirname "$0")/.."
 
 seconds=60
 jobs=1
+fork=0
 build_dir=build/asan
 run_only=0
 merge=0
@@ -29,6 +32,8 @@ while [ $# -gt 0 ]; do
                seconds=$2; shift 2 ;;
     --jobs) [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || usage "--jobs takes a positive integer"
             jobs=$2; shift 2 ;;
+    --fork) [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || usage "--fork takes a positive integer"
+            fork=$2; shift 2 ;;
     --build-dir) [ -n "${2:-}" ] || usage "--build-dir takes a directory"
                  build_dir=$2; shift 2 ;;
     --run-only) run_only=1; shift ;;
@@ -65,13 +70,22 @@ run_target() {
   [ "$t" = suite_file ] && seeds+=(suites suites/figures)
   local log="$work/last-run.log"
   local status=0
+  local workers=()
+  [ "$fork" -gt 0 ] && workers=("-fork=$fork")
   ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}" \
     "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
-    -artifact_prefix="$work/artifacts/" "${dict[@]}" "$work/corpus" "${seeds[@]}" \
+    -artifact_prefix="$work/artifacts/" "${workers[@]}" "${dict[@]}" "$work/corpus" "${seeds[@]}" \
     >"$log" 2>&1 || status=$?
   local runs cov
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
+  # Fork mode prints no final statistics; its progress lines begin "#<executions>: cov: …".
+  [ -n "$runs" ] || runs=$(grep -o '^#[0-9]*: cov' "$log" | tail -1 | grep -o '[0-9]*' || true)
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
+  if [ "$fork" -gt 0 ] && [ "$status" -eq 0 ]; then
+    # Fork mode's "cov" counts features; the edges are those its corpus reaches, replayed once.
+    cov=$("$binary" -runs=0 "$work/corpus" 2>&1 | grep -o 'INITED cov: [0-9]*' | grep -o '[0-9]*$' ||
+            true)
+  fi
   if [ "$status" -ne 0 ]; then
     echo "fuzz $t: FOUND a problem after ${runs:-?} executions (exit $status); input in $work/artifacts, log $log" >&2
     grep -m3 -E 'ERROR|SUMMARY|uncaught|terminate' "$log" >&2 || tail -5 "$log" >&2
