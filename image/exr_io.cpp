@@ -198,9 +198,13 @@ bool exceedsValues(std::int64_t width, std::int64_t height, std::int64_t channel
   return w > max_values || h > max_values / w || c > max_values / w / h;
 }
 
-[[noreturn]] void throwTooLarge(const fs::path& path, const std::string& what, std::int64_t width,
-                                std::int64_t height, std::int64_t channels,
-                                std::size_t max_values) {
+// Throws when a declared extent holds more than `max_values` values; an extent with a factor of
+// 0 or less is undeclared here (OpenEXR judges what it means) and passes.
+void refuseIfTooLarge(const fs::path& path, const std::string& what, std::int64_t width,
+                      std::int64_t height, std::int64_t channels, std::size_t max_values) {
+  if (width <= 0 || height <= 0 || channels <= 0 ||
+      !exceedsValues(width, height, channels, max_values))
+    return;
   throw InputError(fmt::format(
       "cannot read '{}': its header declares {} of {}×{} pixels of {} channels, more than gibench "
       "reads ({} values); crop or downscale the image, or check that the file is not corrupt",
@@ -296,17 +300,11 @@ void checkExrHeader(const fs::path& path, std::size_t max_values) {
     }
     // What the attributes mean is OpenEXR's to check (an empty window, a tile of 0 pixels);
     // the sizes are checked here, since OpenEXR allocates by them when it opens the file.
-    if (width > 0 && height > 0 && channels > 0 &&
-        exceedsValues(width, height, channels, max_values))
-      throwTooLarge(path, "an image", width, height, channels, max_values);
-    if (tile_width > 0 && tile_height > 0 && channels > 0 &&
-        exceedsValues(tile_width, tile_height, channels, max_values))
-      throwTooLarge(path, "tiles", tile_width, tile_height, channels, max_values);
+    refuseIfTooLarge(path, "an image", width, height, channels, max_values);
+    refuseIfTooLarge(path, "tiles", tile_width, tile_height, channels, max_values);
     // The layers are images of the display window (readExr), which may be far larger than the
     // data window (found by fuzzing: 24×16 pixels of data in a window 16 776 208 high).
-    if (display_width > 0 && display_height > 0 && channels > 0 &&
-        exceedsValues(display_width, display_height, channels, max_values))
-      throwTooLarge(path, "a display window", display_width, display_height, channels, max_values);
+    refuseIfTooLarge(path, "a display window", display_width, display_height, channels, max_values);
     if (!multipart) break;
   }
 }
@@ -469,25 +467,23 @@ ExrFile readExr(const fs::path& path, std::size_t max_values) {
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throwUnreadable(path, "its header declares an empty image");
   // Checked again as OpenImageIO reads the header (the first part's, whatever the file's layout).
-  if (exceedsValues(spec.width, spec.height, spec.nchannels, max_values))
-    throwTooLarge(path, "an image", spec.width, spec.height, spec.nchannels, max_values);
+  refuseIfTooLarge(path, "an image", spec.width, spec.height, spec.nchannels, max_values);
   const auto width = std::size_t(spec.width), height = std::size_t(spec.height),
              channels = std::size_t(spec.nchannels);
-  std::vector<float> values(width * height * channels);
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, values.data()))
-    throwUnreadable(path, input->geterror());
-
-  ExrFile file;
-  // The layers hold the display window, luminance widened to grey: checked as they are sized.
+  // The layers hold the display window, luminance widened to grey: checked before
+  // any pixel is read.
   const std::vector<LayerChannels> groups = groupChannels(spec.channelnames);
   std::size_t layer_channels = 0;
   for (const LayerChannels& group : groups) layer_channels += group.indices.size();
   if (spec.full_width <= 0 || spec.full_height <= 0)
     throwUnreadable(path, "its header declares an empty display window");
-  if (layer_channels > 0 &&
-      exceedsValues(spec.full_width, spec.full_height, std::int64_t(layer_channels), max_values))
-    throwTooLarge(path, "a display window", spec.full_width, spec.full_height,
-                  std::int64_t(layer_channels), max_values);
+  refuseIfTooLarge(path, "a display window", spec.full_width, spec.full_height,
+                   std::int64_t(layer_channels), max_values);
+  std::vector<float> values(width * height * channels);
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, values.data()))
+    throwUnreadable(path, input->geterror());
+
+  ExrFile file;
   file.layers = scatter(spec, values, groups);
   file.metadata = readMetadata(spec);
   return file;
