@@ -20,5 +20,6 @@ CommandRunner addStoreCommand(CLI::App& app);
 CommandRunner addReportCommand(CLI::App& app);
 CommandRunner addExportBlenderCommand(CLI::App& app);
 CommandRunner addMergeCommand(CLI::App& app);
+CommandRunner addSolidAngleBenchCommand(CLI::App& app);
 
 }  // namespace gib::cli

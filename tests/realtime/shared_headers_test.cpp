@@ -9,6 +9,7 @@
 #include "realtime/lighting/lighting_shared.h"
 #include "realtime/sh/spherical_harmonics_shared.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
+#include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
 #include "realtime/techniques/light_path_map/light_path_map_shared.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 #include "support/gl_test_context.h"
@@ -43,6 +44,7 @@ TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
       "realtime/lighting/lighting_shared.h",
       "realtime/sh/spherical_harmonics_shared.h",
       "realtime/techniques/irradiance_volume/irradiance_volume_shared.h",
+      "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h",
       "realtime/techniques/light_path_map/light_path_map_shared.h",
       "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"};
   const std::vector<std::string> embedded = sharedHeaders();
@@ -107,6 +109,13 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"kPanesUnit", kPanesUnit},
       {"kIndirectUnit", kIndirectUnit},
       {"int(luminance(vec3(1.0, 0.0, 0.0)) * 1e4 + 0.5)", int(kLuminanceRed * 1e4 + 0.5)},
+      // The CPU weighs jittered samples where the GPU placed them: the same bits on both sides.
+      {"kCoverageTrianglesBinding", kCoverageTrianglesBinding},
+      {"int(coverageHash(123456789u) >> 1u)", int(coverageHash(123456789u) >> 1u)},
+      {"int(coverageSampleOffset(7u, 1234u, 999u, 5, 8).x * 16777216.0)",
+       int(coverageSampleOffset(7u, 1234u, 999u, 5, 8).x * 16777216.0f)},
+      {"int(coverageSampleOffset(7u, 1234u, 999u, 3, 4).y * 16777216.0)",
+       int(coverageSampleOffset(7u, 1234u, 999u, 3, 4).y * 16777216.0f)},
   };
   std::vector<std::string> expressions;
   for (const auto& [expression, value] : cases) expressions.push_back(expression);

@@ -1,0 +1,60 @@
+// What the coverage shaders and the CPU weighting of jittered light sampling (Fournier & Péroche
+// §4) must agree on: where each sample of a pixel lies. The fragment shader tests the samples
+// against the light's and the occluders' triangles; the CPU weighs each visible sample by the
+// solid angle its stratum subtends at its own position, so both compute the same positions from
+// the same hash.
+#pragma once
+#include "realtime/gl/binding_plan_shared.h"
+#include "realtime/gl/host_device_shared.h"
+
+#ifdef __cplusplus
+namespace gib::rt::gpu {
+#endif
+
+// One bit of the coverage image per sample: at most 8 (an 8-bit image, as the paper's).
+const int kMaxSamplesPerPixel = 8;
+
+// std430, binding kCoverageTrianglesBinding: the light's triangles, then the occluders', three
+// vec4 (xyz, w unused) per triangle, world space.
+const int kCoverageTrianglesBinding = kTechniqueFirstStorageBinding + 0;
+
+// A 32-bit integer hash with full avalanche (Wellons' "lowbias32"): the same bits in C++ and GLSL.
+GIB_SHARED_FUNCTION uint coverageHash(uint x) {
+  x ^= x >> 16u;
+  x *= 0x7feb352du;
+  x ^= x >> 15u;
+  x *= 0x846ca68bu;
+  x ^= x >> 16u;
+  return x;
+}
+
+// The top 24 bits of a hash as a float in [0, 1) (exact in both languages).
+GIB_SHARED_FUNCTION float coverageUnitFloat(uint h) {
+  return float(h >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Strata of a pixel for n jittered samples: 1×1, 2×2 or 4×2 (columns × rows); the paper's
+// "portion of the surface of the pixel that is regularly subdivided".
+GIB_SHARED_FUNCTION int coverageStrataColumns(int n) {
+  return n >= 8 ? 4 : (n >= 4 ? 2 : 1);
+}
+
+// Position of jittered sample k (of n) inside pixel `pixel` of the image drawn for point `point`,
+// in pixel units from the pixel's lower left corner: uniform in stratum k. `samples` 0 means the
+// regular scheme (one sample at the pixel centre).
+GIB_SHARED_FUNCTION vec2 coverageSampleOffset(uint seed, uint point, uint pixel, int k,
+                                              int samples) {
+  if (samples == 0) return vec2(0.5f, 0.5f);
+  int columns = coverageStrataColumns(samples);
+  int rows = samples / columns;
+  uint h = coverageHash(seed ^ coverageHash(point ^ coverageHash(pixel * 8u + uint(k))));
+  float u = coverageUnitFloat(h);
+  float v = coverageUnitFloat(coverageHash(h));
+  return vec2((float(k % columns) + u) / float(columns), (float(k / columns) + v) / float(rows));
+}
+
+#ifdef __cplusplus
+static_assert(kCoverageTrianglesBinding <
+              kTechniqueFirstStorageBinding + kTechniqueStorageBindingCount);
+}  // namespace gib::rt::gpu
+#endif

@@ -1,0 +1,79 @@
+#include "reports/solid_angle_bench_page.h"
+
+#include "reports/html_text.h"
+#include "reports/report_page.h"
+#include "reports/svg_charts.h"
+
+#include <fmt/format.h>
+
+namespace gib::reports {
+
+namespace {
+
+std::string errorTable(const std::vector<SolidAngleBenchRow>& rows) {
+  HtmlTable table({{"scheme"},
+                   {"image", true},
+                   {"mean |error| (sr)", true},
+                   {"relative", true},
+                   {"SD of error (sr)", true},
+                   {"max |error| (sr)", true},
+                   {"mean error (bias, sr)", true}});
+  for (const SolidAngleBenchRow& r : rows)
+    table.addRow({escapeHtml(r.scheme), fmt::format("{0}×{0}", r.size),
+                  fmt::format("{:.3e}", r.mean_abs_error),
+                  fmt::format("{:.2e}", r.mean_exact > 0 ? r.mean_abs_error / r.mean_exact : 0),
+                  fmt::format("{:.3e}", r.sd_error), fmt::format("{:.3e}", r.max_abs_error),
+                  fmt::format("{:+.2e}", r.mean_error)});
+  return table.html();
+}
+
+std::vector<PassBar> phaseBars(const std::vector<SolidAngleBenchRow>& rows) {
+  std::vector<PassBar> bars;
+  for (const SolidAngleBenchRow& r : rows) {
+    const double total = r.render_ms[1] + r.read_back_ms[1] + r.weight_ms[1];
+    bars.push_back({fmt::format("{} {}²", r.scheme, r.size), 0, total, total, total});
+    bars.push_back({"render", 1, r.render_ms[1], r.render_ms[0], r.render_ms[2]});
+    bars.push_back({"read back", 1, r.read_back_ms[1], r.read_back_ms[0], r.read_back_ms[2]});
+    bars.push_back({"weight", 1, r.weight_ms[1], r.weight_ms[0], r.weight_ms[2]});
+  }
+  return bars;
+}
+
+std::string figureGrid(const std::vector<SolidAngleBenchFigure>& figures) {
+  std::string html = "<div class=\"figure-grid\">";
+  for (const SolidAngleBenchFigure& f : figures)
+    html += fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>",
+                        escapeHtml(urlPath(f.png)), escapeHtml(f.label), escapeHtml(f.label));
+  html += "</div>";
+  html +=
+      "<p>|estimate − exact| over the receiving plane, seen from above (x to the right, z "
+      "downwards), magma from 0 to each panel's largest error (its colour bar, in sr).</p>";
+  return html;
+}
+
+}  // namespace
+
+std::string solidAngleBenchPage(const std::vector<std::pair<std::string, std::string>>& facts,
+                                const std::vector<SolidAngleBenchRow>& rows,
+                                const std::vector<SolidAngleBenchFigure>& figures) {
+  std::string body = "<h1>Hardware sampling of an area light: the bench test</h1>";
+  body +=
+      "<p>Fournier &amp; Péroche §6.1: a square light partly hidden by a square occluder whose "
+      "edges are aligned with the sampling grid; each scheme estimates the visible solid angle at "
+      "every point of a grid on the receiving plane, against the exact value.</p>";
+  body += factsTable(facts);
+  body += htmlSection("errors", "Error of the visible solid angle (Fig. 7)", errorTable(rows));
+  if (!figures.empty())
+    body += htmlSection("distribution", "The error over the plane (Fig. 8)", figureGrid(figures));
+  std::size_t samples = rows.empty() ? 0 : rows.front().timing_samples;
+  body += htmlSection(
+      "phases", "Time of each phase per point (Fig. 9)",
+      fmt::format("<p>Median and quartiles of {} points per scheme and size, wall clock of the "
+                  "calling thread: drawing finished with glFinish, the read-back, the CPU "
+                  "weighting.</p>",
+                  samples) +
+          passTimingChart(phaseBars(rows), "point"));
+  return htmlPage("Hardware sampling of an area light", body);
+}
+
+}  // namespace gib::reports
