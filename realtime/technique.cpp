@@ -4,6 +4,7 @@
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
+#include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_technique.h"
 #include "realtime/techniques/light_path_map/light_path_map_technique.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
 
@@ -14,7 +15,7 @@ namespace gib::rt {
 const std::vector<TechniqueInfo>& techniqueCatalogue() {
   static const std::vector<TechniqueInfo> catalogue = {
       directTechniqueInfo(), stochasticRadiosityTechniqueInfo(), irradianceVolumeTechniqueInfo(),
-      lightPathMapTechniqueInfo()};
+      lightPathMapTechniqueInfo(), jitteredLightSamplingTechniqueInfo()};
   return catalogue;
 }
 

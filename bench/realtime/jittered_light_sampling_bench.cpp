@@ -3,6 +3,7 @@
 // means over the iterations; `gibench solid-angle-bench` reports medians and quartiles).
 #include "realtime/gl/context.h"
 #include "realtime/techniques/jittered_light_sampling/solid_angle_bench.h"
+#include "support/technique_frames.h"
 
 #include <benchmark/benchmark.h>
 
@@ -45,5 +46,21 @@ BENCHMARK_CAPTURE(BM_LightCoverageSample, regular, "regular")->Apply(sizes);
 BENCHMARK_CAPTURE(BM_LightCoverageSample, jittered1, "jittered1")->Apply(sizes);
 BENCHMARK_CAPTURE(BM_LightCoverageSample, jittered4, "jittered4")->Apply(sizes);
 BENCHMARK_CAPTURE(BM_LightCoverageSample, jittered8, "jittered8")->Apply(sizes);
+
+// The technique's frame on the Cornell box at 64² (4096 points, two batches), per scheme: the
+// counters are its passes' medians (coverage, weighing).
+void BM_JitteredLightSamplingFrame(benchmark::State& state, const char* scheme, const char* spp) {
+  rt::benchmarkTechniqueFrames(
+      state, "jittered_light_sampling",
+      {std::string("scheme=") + scheme, std::string("samples_per_pixel=") + spp,
+       "sampling_size=" + std::to_string(state.range(0))},
+      "cornell", 64);
+}
+void frameSizes(benchmark::internal::Benchmark* b) {
+  b->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+BENCHMARK_CAPTURE(BM_JitteredLightSamplingFrame, regular, "regular", "1")->Apply(frameSizes);
+BENCHMARK_CAPTURE(BM_JitteredLightSamplingFrame, jittered1, "jittered", "1")->Apply(frameSizes);
+BENCHMARK_CAPTURE(BM_JitteredLightSamplingFrame, jittered4, "jittered", "4")->Apply(frameSizes);
 
 }  // namespace

@@ -65,14 +65,15 @@ void DirectLighting::declarePasses(
     passes.add(passPath({lights, name}), description);
 }
 
-DirectLighting::DirectLighting(const ShadowSettings& settings, int light_samples)
-    : shadow_settings_(settings), light_samples_(light_samples) {}
+DirectLighting::DirectLighting(const ShadowSettings& settings, int light_samples, bool area_lights)
+    : shadow_settings_(settings), light_samples_(light_samples), area_lights_(area_lights) {}
 
 void DirectLighting::prepare(const GpuScene& scene) {
   // Points on emitters sit a hair in front of them, beyond the cube maps' near plane.
   const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
-  samples_ = makeLightSamples(scene.scene(), scene.emitters(), light_samples_, light_samples_,
-                              1e-3f * extent);
+  samples_ = makeLightSamples(scene.scene(),
+                              area_lights_ ? scene.emitters() : std::vector<EmitterTriangle>{},
+                              light_samples_, light_samples_, 1e-3f * extent);
   shadow_maps_.emplace(shadow_settings_, scene,
                        shadowBatchCapacity(shadow_settings_, samples_.size()));
   emission_ = gl::FullScreenPass("realtime/lighting/emission.frag.glsl");

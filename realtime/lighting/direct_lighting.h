@@ -43,7 +43,9 @@ struct LitView {
 
 class DirectLighting {
  public:
-  DirectLighting(const ShadowSettings& settings, int light_samples);
+  // `area_lights` false leaves emissive triangles to the caller (jittered light sampling samples
+  // them by rasterization): the samples are then the spot, directional and sky lights only.
+  DirectLighting(const ShadowSettings& settings, int light_samples, bool area_lights = true);
 
   // Declares the passes writeEmission and addDirect open under `parent`, with one shading pass
   // per entry of `view_passes` (name, description) besides the camera's.
@@ -81,6 +83,7 @@ class DirectLighting {
 
   ShadowSettings shadow_settings_;
   int light_samples_;
+  bool area_lights_;
   std::vector<LightSample> samples_;
   glm::vec3 light_offset_{0.0f};
   std::optional<ShadowMaps> shadow_maps_;

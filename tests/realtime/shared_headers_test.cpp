@@ -111,6 +111,8 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"int(luminance(vec3(1.0, 0.0, 0.0)) * 1e4 + 0.5)", int(kLuminanceRed * 1e4 + 0.5)},
       // The CPU weighs jittered samples where the GPU placed them: the same bits on both sides.
       {"kCoverageTrianglesBinding", kCoverageTrianglesBinding},
+      {"kCoverageUnit", kCoverageUnit},
+      {"kWeighGroupSize", kWeighGroupSize},
       {"int(coverageHash(123456789u) >> 1u)", int(coverageHash(123456789u) >> 1u)},
       {"int(coverageSampleOffset(7u, 1234u, 999u, 5, 8).x * 16777216.0)",
        int(coverageSampleOffset(7u, 1234u, 999u, 5, 8).x * 16777216.0f)},

@@ -5,12 +5,12 @@
 
 uniform int u_samples;  // 0: the regular scheme (pixel centres); else jittered, 1..8 per pixel
 uniform uint u_seed;
-uniform uint u_point;
 uniform int u_size;
 flat in vec2 v_a;
 flat in vec2 v_b;
 flat in vec2 v_c;
 flat in vec3 v_depth_plane;
+flat in uint v_point;
 layout(location = 0) out uint o_mask;
 
 float edge(vec2 a, vec2 b, vec2 p) {
@@ -40,7 +40,7 @@ void main() {
   }
   uint mask = 0u;
   for (int k = 0; k < max(u_samples, 1); ++k) {
-    vec2 p = vec2(pixel) + coverageSampleOffset(u_seed, u_point, index, k, u_samples);
+    vec2 p = vec2(pixel) + coverageSampleOffset(u_seed, v_point, index, k, u_samples);
     if (inside(v_a, b, p) && inside(b, c, p) && inside(c, v_a, p)) mask |= 1u << uint(k);
   }
   if (mask == 0u) discard;

@@ -18,6 +18,11 @@ const int kMaxSamplesPerPixel = 8;
 // vec4 (xyz, w unused) per triangle, world space.
 const int kCoverageTrianglesBinding = kTechniqueFirstStorageBinding + 0;
 
+// The technique's coverage images (a layer per G-buffer point of the batch), read by the weighting
+// pass; its work groups, one per point, share the point's pixels among their invocations.
+const int kCoverageUnit = kTechniqueFirstUnit + 0;
+const int kWeighGroupSize = 64;
+
 // A 32-bit integer hash with full avalanche (Wellons' "lowbias32"): the same bits in C++ and GLSL.
 GIB_SHARED_FUNCTION uint coverageHash(uint x) {
   x ^= x >> 16u;

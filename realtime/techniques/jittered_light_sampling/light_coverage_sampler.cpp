@@ -6,9 +6,7 @@
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
 
 #include <fmt/format.h>
-#include <glm/ext/matrix_clip_space.hpp>
 #include <glm/geometric.hpp>
-#include <glm/mat4x4.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -33,12 +31,13 @@ double cornerSolidAngle(double a, double b, double h) {
 
 }  // namespace
 
-// The point's camera: origin x, looking along the light plane's normal towards it, image plane
+// The point's camera, as coverage_view.glsl builds it on the GPU (here in double, for the
+// weights): origin x, looking along the light plane's normal towards it, image plane
 // axes U (the light's first edge) and V, window [u0, u1] × [v0, v1] in the light's plane at
 // distance d.
 struct LightCoverageSampler::View {
   bool sees_plane = false;
-  glm::mat4 view_projection{1.0f};
+  glm::dvec3 x{0.0};
   double d = 0;
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
 };
@@ -119,12 +118,14 @@ LightCoverageSampler::LightCoverageSampler(const std::vector<glm::vec3>& light,
   glProgramUniform1i(program_.id(), program_.uniform("u_size"), settings.size);
   glProgramUniform1i(program_.id(), program_.uniform("u_samples"), samples);
   glProgramUniform1ui(program_.id(), program_.uniform("u_seed"), settings.seed);
+  glProgramUniform1i(program_.id(), program_.uniform("u_light_vertices"), light_vertices_);
   visible_samples_ = gl::Query(GL_SAMPLES_PASSED);
   pixels_.resize(std::size_t(settings.size) * settings.size);
 }
 
 LightCoverageSampler::View LightCoverageSampler::viewFrom(const glm::dvec3& x) const {
   View view;
+  view.x = x;
   const double signed_distance = glm::dot(plane_point_ - x, plane_normal_);
   view.d = std::abs(signed_distance);
   if (view.d < 1e-9) return view;  // in the light's plane: it subtends nothing
@@ -142,19 +143,6 @@ LightCoverageSampler::View LightCoverageSampler::viewFrom(const glm::dvec3& x) c
     view.v0 = std::min(view.v0, v);
     view.v1 = std::max(view.v1, v);
   }
-  // The near plane well before any occluder the caller keeps between x and the light; the far
-  // plane just past the light, which lies at depth d.
-  const double near = 1e-3 * view.d, far = 1.01 * view.d, s = near / view.d;
-  const glm::dmat4 projection =
-      glm::frustum(view.u0 * s, view.u1 * s, view.v0 * s, view.v1 * s, near, far);
-  glm::dmat4 world_to_view(1.0);
-  for (int i = 0; i < 3; ++i) {
-    world_to_view[i][0] = right[i];
-    world_to_view[i][1] = up[i];
-    world_to_view[i][2] = back[i];
-  }
-  world_to_view[3] = glm::dvec4(-glm::dot(right, x), -glm::dot(up, x), -glm::dot(back, x), 1.0);
-  view.view_projection = glm::mat4(projection * world_to_view);
   return view;
 }
 
@@ -166,8 +154,8 @@ void LightCoverageSampler::draw(const View& view, std::uint32_t point) {
   framebuffer_.bind();
   glViewport(0, 0, settings_.size, settings_.size);
   program_.use();
-  glProgramUniformMatrix4fv(program_.id(), program_.uniform("u_view_projection"), 1, GL_FALSE,
-                            &view.view_projection[0][0]);
+  const glm::vec3 x(view.x);
+  glProgramUniform3fv(program_.id(), program_.uniform("u_point_position"), 1, &x[0]);
   glProgramUniform1ui(program_.id(), program_.uniform("u_point"), point);
   triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kCoverageTrianglesBinding);
   vertex_array_.bind();

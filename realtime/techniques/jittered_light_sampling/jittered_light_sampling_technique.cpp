@@ -1,0 +1,227 @@
+#include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_technique.h"
+
+#include "realtime/gl/gpu_commands.h"
+#include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/shader_library.h"
+#include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gib::rt {
+
+namespace {
+
+constexpr std::string_view kAreaLightsPass = "area lights";
+constexpr std::string_view kCoveragePass = "coverage";
+constexpr std::string_view kWeighingPass = "weighing";
+// What a batch's coverage layers (8-bit) and their depth (32-bit) may take.
+constexpr double kBatchBudgetBytes = 64.0 * 1024 * 1024;
+
+CoverageSettings coverageSettings(const ParameterValues& p) {
+  CoverageSettings s;
+  const std::string& scheme = p.text("scheme");
+  parseCoverageScheme(scheme == "jittered" ? "jittered" + p.text("samples_per_pixel") : scheme, s);
+  s.size = p.integer("sampling_size");
+  s.seed = std::uint32_t(p.integer("seed"));
+  return s;
+}
+
+// The scene's triangles but those in the light's own plane (the light itself, and surfaces flush
+// with it, which cannot hide it), three corners each.
+std::vector<glm::vec4> occludersOf(const scene::Scene& scene, const AreaLight& light,
+                                   float tolerance) {
+  std::vector<glm::vec4> corners;
+  const glm::vec3 p0 = light.triangles.front();
+  auto inPlane = [&](const glm::vec3& p) {
+    return std::abs(glm::dot(p - p0, light.normal)) < tolerance;
+  };
+  for (const scene::Mesh& mesh : scene.meshes)
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+      if (inPlane(a) && inPlane(b) && inPlane(c)) continue;
+      corners.insert(corners.end(), {glm::vec4(a, 1), glm::vec4(b, 1), glm::vec4(c, 1)});
+    }
+  return corners;
+}
+
+}  // namespace
+
+JitteredLightSamplingTechnique::JitteredLightSamplingTechnique(const ParameterValues& p)
+    : coverage_(coverageSettings(p)),
+      lighting_(shadowSettings(p), p.integer("light_samples"), /*area_lights=*/false) {}
+
+void JitteredLightSamplingTechnique::prepare(const GpuScene& scene, int width, int height) {
+  scene_ = &scene;
+  gbuffer_.emplace(width, height);
+  lighting_.prepare(scene);
+  const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
+  lights_ = groupAreaLights(scene.emitters(), extent);
+  lift_ = 1e-5f * extent;
+  points_ = width * height;
+
+  GLint max_layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  const double layer_bytes = 5.0 * coverage_.size * coverage_.size;
+  batch_ =
+      int(std::max(1.0, std::min({double(max_layers), std::floor(kBatchBudgetBytes / layer_bytes),
+                                  double(points_)})));
+  coverage_layers_ = gl::Texture::make2DArray(GL_R8UI, coverage_.size, coverage_.size, batch_);
+  coverage_layers_.setFilter(GL_NEAREST, GL_NEAREST);  // an integer texture filters no other way
+  depth_layers_ =
+      gl::Texture::make2DArray(GL_DEPTH_COMPONENT32F, coverage_.size, coverage_.size, batch_);
+  framebuffer_.attachColor(0, coverage_layers_);
+  framebuffer_.attachDepth(depth_layers_);
+  framebuffer_.setDrawBuffers(1);
+  framebuffer_.checkComplete();
+
+  draw_program_ = gl::buildProgram(
+      {{GL_VERTEX_SHADER, "realtime/techniques/jittered_light_sampling/coverage.vert.glsl"},
+       {GL_GEOMETRY_SHADER, "realtime/techniques/jittered_light_sampling/coverage.geom.glsl"},
+       {GL_FRAGMENT_SHADER, "realtime/techniques/jittered_light_sampling/coverage.frag.glsl"}},
+      "#define GBUFFER_POINTS\n");
+  weigh_program_ =
+      gl::buildProgram({{GL_COMPUTE_SHADER,
+                         "realtime/techniques/jittered_light_sampling/weigh_coverage.comp.glsl"}});
+  const int samples =
+      coverage_.scheme == CoverageScheme::kJittered ? coverage_.samples_per_pixel : 0;
+  for (const gl::Program* program : {&draw_program_, &weigh_program_}) {
+    const GLuint id = program->id();
+    glProgramUniform1i(id, program->uniform("u_point_count"), points_);
+    glProgramUniform1i(id, program->uniform("u_gbuffer_width"), width);
+    glProgramUniform1f(id, program->uniform("u_lift"), lift_);
+    glProgramUniform1i(id, program->uniform("u_normals_face_viewer"), 0);
+    glProgramUniform1i(id, program->uniform("u_size"), coverage_.size);
+    glProgramUniform1i(id, program->uniform("u_samples"), samples);
+    glProgramUniform1ui(id, program->uniform("u_seed"), coverage_.seed);
+  }
+  glProgramUniform1i(weigh_program_.id(), weigh_program_.uniform("u_equal_weights"),
+                     coverage_.scheme == CoverageScheme::kOcclusionQuery);
+
+  // Per light, its triangles then its occluders.
+  for (const AreaLight& light : lights_) {
+    std::vector<glm::vec4> corners;
+    for (const glm::vec3& c : light.triangles) corners.emplace_back(c, 1.0f);
+    const std::vector<glm::vec4> occluders = occludersOf(scene.scene(), light, 1e-4f * extent);
+    corners.insert(corners.end(), occluders.begin(), occluders.end());
+    light_buffers_.push_back(gl::Buffer::fromVector(corners, 0));
+  }
+}
+
+void JitteredLightSamplingTechnique::render(Frame& frame) {
+  const GpuScene& scene = *scene_;
+  gbuffer_->render(scene, &frame.profiler);
+  lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
+  if (lighting_.sampleCount() > 0)
+    lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
+  if (lights_.empty()) return;
+  auto pass = frame.profiler.pass(kAreaLightsPass);
+  for (std::size_t i = 0; i < lights_.size(); ++i) sampleAreaLight(i, frame.target, frame.profiler);
+}
+
+void JitteredLightSamplingTechnique::sampleAreaLight(std::size_t index, const RenderTarget& target,
+                                                     gl::PassProfiler& profiler) {
+  const AreaLight& light = lights_[index];
+  const gl::Buffer& triangles = light_buffers_[index];
+  const auto light_vertices = GLsizei(light.triangles.size());
+  const auto all_vertices = GLsizei(triangles.bytes() / sizeof(glm::vec4));
+  for (const gl::Program* program : {&draw_program_, &weigh_program_}) {
+    glProgramUniform1i(program->id(), program->uniform("u_light_vertices"), light_vertices);
+    glProgramUniform3fv(program->id(), program->uniform("u_emitting_side"), 1, &light.normal[0]);
+  }
+  glProgramUniform3fv(weigh_program_.id(), weigh_program_.uniform("u_emission"), 1,
+                      &light.emission[0]);
+  scene_->bindSceneBuffers();
+  gbuffer_->bindTextures();
+  triangles.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kCoverageTrianglesBinding);
+
+  for (int first = 0; first < points_; first += batch_) {
+    const int count = std::min(batch_, points_ - first);
+    {
+      auto coverage = profiler.pass(kCoveragePass);
+      const GLuint zero[4] = {0, 0, 0, 0};
+      const float far_depth = 1.0f;
+      glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, 0, zero);
+      glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
+      framebuffer_.bind();
+      glViewport(0, 0, coverage_.size, coverage_.size);
+      draw_program_.use();
+      glProgramUniform1i(draw_program_.id(), draw_program_.uniform("u_first_point"), first);
+      vertex_array_.bind();
+      glDisable(GL_CULL_FACE);
+      glDisable(GL_BLEND);
+      glEnable(GL_DEPTH_TEST);
+      glEnable(GL_COLOR_LOGIC_OP);
+      // The light's samples in (OR, writing its depth), then the occluders in front of it take
+      // theirs out (AND NOT), without writing depth (§4.2.2).
+      glLogicOp(GL_OR);
+      glDepthFunc(GL_ALWAYS);
+      glDepthMask(GL_TRUE);
+      gl::drawArraysInstanced(GL_TRIANGLES, 0, light_vertices, count);
+      if (all_vertices > light_vertices) {
+        glLogicOp(GL_AND_INVERTED);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_FALSE);
+        gl::drawArraysInstanced(GL_TRIANGLES, light_vertices, all_vertices - light_vertices, count);
+      }
+      glDisable(GL_COLOR_LOGIC_OP);
+      glDepthMask(GL_TRUE);
+    }
+    auto weighing = profiler.pass(kWeighingPass);
+    weigh_program_.use();
+    glProgramUniform1i(weigh_program_.id(), weigh_program_.uniform("u_first_point"), first);
+    coverage_layers_.bind(gpu::kCoverageUnit);
+    glBindImageTexture(gpu::kImageDestinationUnit, target.color().id(), 0, GL_FALSE, 0,
+                       GL_READ_WRITE, GL_RGBA32F);
+    gl::dispatchCompute(GLuint(count), 1, 1);
+    // The next batch's weighing reads what this one added; the harness reads the target.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  }
+}
+
+std::vector<TechniqueStatistic> JitteredLightSamplingTechnique::statistics() const {
+  return {{"points", double(points_)},
+          {"area_lights", double(lights_.size())},
+          {"points_per_batch", double(batch_)}};
+}
+
+TechniqueInfo jitteredLightSamplingTechniqueInfo() {
+  TechniqueInfo info;
+  info.name = "jittered_light_sampling";
+  info.description =
+      "direct illumination (LE + LDE) with area lights sampled by rasterizing the light and its "
+      "occluders from every pixel: occlusion query, regular or jittered (1, 4, 8 per pixel)";
+  info.source =
+      "Fournier & Péroche, Speeding up global illumination computations using programmable "
+      "GPUs, §4";
+  info.parameters = {
+      choiceParameter("scheme", "jittered", {"occlusion_query", "regular", "jittered"},
+                      "how the coverage image samples the light: visible pixel centres counted "
+                      "alike, pixel centres weighted by their solid angle, or jittered samples"),
+      choiceParameter("samples_per_pixel", "1", {"1", "4", "8"},
+                      "jittered: samples per pixel, one in each stratum (2×2, 4×2)"),
+      numericParameter("sampling_size", ParameterType::kInteger, "32", kMinCoverageSize,
+                       kMaxCoverageSize, "pixels",
+                       "coverage image side, per point and light (the paper: 32, 48, 64)"),
+      numericParameter("seed", ParameterType::kInteger, "0", 0, 2147483647, "",
+                       "seed of the jittered sample positions"),
+  };
+  for (const ParameterSpec& spec : directLightingParameters()) info.parameters.push_back(spec);
+  info.passes.add(passPath({kFramePass, kGBufferPass}), "what each pixel's primary ray hits");
+  DirectLighting::declarePasses(info.passes, kFramePass);
+  const std::string area = passPath({kFramePass, kAreaLightsPass});
+  info.passes.add(area, "per area light, per batch of points: coverage, then weighing");
+  info.passes.add(passPath({area, kCoveragePass}),
+                  "the light and its occluders rasterized into each point's coverage layer");
+  info.passes.add(passPath({area, kWeighingPass}),
+                  "each point's visible samples weighed by solid angle, BRDF and cosine");
+  info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
+    return std::make_unique<JitteredLightSamplingTechnique>(values);
+  };
+  return info;
+}
+
+}  // namespace gib::rt
