@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
+#include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_technique.h"
 #include "realtime/techniques/light_path_map/light_path_map_technique.h"
@@ -13,9 +14,12 @@
 namespace gib::rt {
 
 const std::vector<TechniqueInfo>& techniqueCatalogue() {
-  static const std::vector<TechniqueInfo> catalogue = {
-      directTechniqueInfo(), stochasticRadiosityTechniqueInfo(), irradianceVolumeTechniqueInfo(),
-      lightPathMapTechniqueInfo(), jitteredLightSamplingTechniqueInfo()};
+  static const std::vector<TechniqueInfo> catalogue = {directTechniqueInfo(),
+                                                       stochasticRadiosityTechniqueInfo(),
+                                                       irradianceVolumeTechniqueInfo(),
+                                                       lightPathMapTechniqueInfo(),
+                                                       jitteredLightSamplingTechniqueInfo(),
+                                                       hemisphericalGatherTechniqueInfo()};
   return catalogue;
 }
 

@@ -63,10 +63,13 @@ AtlasMesh::AtlasMesh(const std::vector<AtlasTriangle>& triangles, const AtlasLay
   glEnableVertexArrayAttrib(vao, gpu::kVertexAtlasUvLocation);
 }
 
-void AtlasMesh::draw() const {
-  if (vertex_count_ == 0) return;
+void AtlasMesh::draw(int instances) const {
+  if (vertex_count_ == 0 || instances <= 0) return;
   vertex_array_.bind();
-  gl::drawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
+  if (instances == 1)
+    gl::drawArrays(GL_TRIANGLES, 0, GLsizei(vertex_count_));
+  else
+    gl::drawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertex_count_), instances);
 }
 
 }  // namespace gib::rt::atlas

@@ -19,7 +19,8 @@ class AtlasMesh {
             int tessellation_levels);
 
   std::size_t vertexCount() const { return vertex_count_; }
-  void draw() const;
+  // `instances` times in one command (gl_InstanceID tells them apart: layered rendering).
+  void draw(int instances = 1) const;
 
  private:
   std::size_t vertex_count_ = 0;

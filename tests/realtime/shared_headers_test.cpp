@@ -8,6 +8,7 @@
 #include "realtime/lighting/light_sample_shared.h"
 #include "realtime/lighting/lighting_shared.h"
 #include "realtime/sh/spherical_harmonics_shared.h"
+#include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
 #include "realtime/techniques/light_path_map/light_path_map_shared.h"
@@ -43,6 +44,7 @@ TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
       "realtime/lighting/light_sample_shared.h",
       "realtime/lighting/lighting_shared.h",
       "realtime/sh/spherical_harmonics_shared.h",
+      "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h",
       "realtime/techniques/irradiance_volume/irradiance_volume_shared.h",
       "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h",
       "realtime/techniques/light_path_map/light_path_map_shared.h",
@@ -113,6 +115,11 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"kCoverageTrianglesBinding", kCoverageTrianglesBinding},
       {"kCoverageUnit", kCoverageUnit},
       {"kWeighGroupSize", kWeighGroupSize},
+      {"kRadianceAtlasUnit", kRadianceAtlasUnit},
+      {"kGBufferAlbedoUnit", kGBufferAlbedoUnit},
+      {"kProjectionHemispherical", kProjectionHemispherical},
+      {"kGatherSumGroupSize", kGatherSumGroupSize},
+      {"int(kPerspectiveFieldOfViewDegrees)", int(kPerspectiveFieldOfViewDegrees)},
       {"int(coverageHash(123456789u) >> 1u)", int(coverageHash(123456789u) >> 1u)},
       {"int(coverageSampleOffset(7u, 1234u, 999u, 5, 8).x * 16777216.0)",
        int(coverageSampleOffset(7u, 1234u, 999u, 5, 8).x * 16777216.0f)},

@@ -1,0 +1,114 @@
+#include "realtime/techniques/hemispherical_gather/hemisphere_gather.h"
+
+#include "realtime/gl/gpu_commands.h"
+#include "realtime/gl/shader_library.h"
+#include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gib::rt {
+
+namespace {
+
+// What a batch's views (RGBA32F and 32-bit depth) may take.
+constexpr double kBatchBudgetBytes = 128.0 * 1024 * 1024;
+
+void setUniform(const gl::Program& program, const char* name, int value) {
+  glProgramUniform1i(program.id(), program.uniform(name), value);
+}
+void setUniform(const gl::Program& program, const char* name, float value) {
+  glProgramUniform1f(program.id(), program.uniform(name), value);
+}
+void setUniform(const gl::Program& program, const char* name, glm::ivec2 value) {
+  glProgramUniform2i(program.id(), program.uniform(name), value.x, value.y);
+}
+
+}  // namespace
+
+HemisphereGather::HemisphereGather(int projection, int view_size, int spacing, int width,
+                                   int height, float extent)
+    : projection_(projection), view_size_(view_size), spacing_(spacing), extent_(extent) {
+  grid_ = {(width + spacing - 1) / spacing, (height + spacing - 1) / spacing};
+  GLint max_layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  const double layer_bytes = 20.0 * view_size * view_size;
+  batch_ =
+      int(std::max(1.0, std::min({double(max_layers), std::floor(kBatchBudgetBytes / layer_bytes),
+                                  double(grid_.x * grid_.y)})));
+  views_ = gl::Texture::make2DArray(GL_RGBA32F, view_size, view_size, batch_);
+  views_.setFilter(GL_NEAREST, GL_NEAREST);
+  views_depth_ = gl::Texture::make2DArray(GL_DEPTH_COMPONENT32F, view_size, view_size, batch_);
+  framebuffer_.attachColor(0, views_);
+  framebuffer_.attachDepth(views_depth_);
+  framebuffer_.setDrawBuffers(1);
+  framebuffer_.checkComplete();
+  irradiance_ = gl::Texture::make2D(GL_RGBA32F, grid_.x, grid_.y);
+  irradiance_.setFilter(GL_NEAREST, GL_NEAREST);
+  const float zero[4] = {0, 0, 0, 0};
+  glClearTexImage(irradiance_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+
+  view_program_ = gl::buildProgram(
+      {{GL_VERTEX_SHADER, "realtime/techniques/hemispherical_gather/gather_view.vert.glsl"},
+       {GL_GEOMETRY_SHADER, "realtime/techniques/hemispherical_gather/gather_view.geom.glsl"},
+       {GL_FRAGMENT_SHADER, "realtime/techniques/hemispherical_gather/gather_view.frag.glsl"}});
+  sum_program_ = gl::buildProgram(
+      {{GL_COMPUTE_SHADER, "realtime/techniques/hemispherical_gather/gather_sum.comp.glsl"}});
+  setPointUniforms(view_program_);
+  setUniform(view_program_, "u_projection", projection);
+  setUniform(view_program_, "u_near", 1e-4f * extent);
+  setUniform(view_program_, "u_far", 2.0f * extent);
+  setUniform(sum_program_, "u_grid", grid_);
+  setUniform(sum_program_, "u_size", view_size);
+  setUniform(sum_program_, "u_projection", projection);
+}
+
+void HemisphereGather::setPointUniforms(const gl::Program& program) const {
+  setUniform(program, "u_grid", grid_);
+  setUniform(program, "u_spacing", spacing_);
+  setUniform(program, "u_lift", 1e-4f * extent_);
+  setUniform(program, "u_normals_face_viewer", 0);
+}
+
+void HemisphereGather::gather(const GpuScene& scene, const atlas::AtlasMesh& mesh,
+                              const gl::Texture& radiance_atlas, const GBuffer& gbuffer,
+                              gl::PassProfiler& profiler, const glm::vec3& background) {
+  auto pass = profiler.pass(kGatherPass);
+  const int points = grid_.x * grid_.y;
+  for (int first = 0; first < points; first += batch_) {
+    const int count = std::min(batch_, points - first);
+    {
+      auto views = profiler.pass(kGatherViewsPass);
+      const float clear[4] = {background.r, background.g, background.b, 0};
+      const float far_depth = 1.0f;
+      glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
+      glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
+      framebuffer_.bind();
+      glViewport(0, 0, view_size_, view_size_);
+      scene.bindSceneBuffers();
+      gbuffer.bindTextures();
+      radiance_atlas.bind(gpu::kRadianceAtlasUnit);
+      view_program_.use();
+      setUniform(view_program_, "u_first_point", first);
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LESS);
+      glDepthMask(GL_TRUE);
+      glDisable(GL_CULL_FACE);  // both sides of every surface hide what is behind them
+      glDisable(GL_BLEND);
+      glEnable(GL_CLIP_DISTANCE0);
+      mesh.draw(count);
+      glDisable(GL_CLIP_DISTANCE0);
+    }
+    auto sum = profiler.pass(kGatherSumPass);
+    sum_program_.use();
+    setUniform(sum_program_, "u_first_point", first);
+    views_.bind(gpu::kGatherViewsUnit);
+    glBindImageTexture(gpu::kImageDestinationUnit, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
+    gl::dispatchCompute(GLuint(count), 1, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  }
+}
+
+}  // namespace gib::rt

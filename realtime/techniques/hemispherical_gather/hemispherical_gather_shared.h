@@ -1,0 +1,26 @@
+// The hemispherical gather's GPU layout, read by its C++ and its GLSL: texture units within the
+// technique's range, the projections, and the work groups that sum a gather view.
+#pragma once
+#include "realtime/gl/binding_plan_shared.h"
+#include "realtime/gl/host_device_shared.h"
+
+#ifdef __cplusplus
+namespace gib::rt::gpu {
+#endif
+
+const int kRadianceAtlasUnit = kTechniqueFirstUnit + 0;  // the directly lit scene: ρ/π·E per texel
+const int kGatherViewsUnit = kTechniqueFirstUnit + 1;    // the batch's views, a layer each
+const int kGatherIrradianceUnit = kTechniqueFirstUnit + 2;  // E at each gather point (grid)
+const int kGBufferAlbedoUnit = kTechniqueFirstUnit + 3;     // the camera G-buffer's diffuse albedo
+
+// How a gather view maps directions around the normal to its image (§5.2, Fig. 3).
+const int kProjectionPerspective = 0;    // a 160° pinhole camera along the normal
+const int kProjectionHemispherical = 1;  // fish-eye: the unit direction's tangent coordinates
+
+const float kPerspectiveFieldOfViewDegrees = 160.0f;
+const int kGatherSumGroupSize = 64;
+
+#ifdef __cplusplus
+static_assert(kGBufferAlbedoUnit < kTechniqueFirstUnit + kTechniqueUnitCount);
+}  // namespace gib::rt::gpu
+#endif

@@ -1,0 +1,164 @@
+#include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
+
+#include "realtime/atlas/atlas_lighting.h"
+#include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/shader_library.h"
+#include "realtime/lighting/light_samples.h"
+#include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace gib::rt {
+
+namespace {
+
+constexpr std::string_view kInterpolatePass = "interpolation";
+
+int projectionOf(const ParameterValues& p) {
+  return p.text("projection") == "perspective" ? gpu::kProjectionPerspective
+                                               : gpu::kProjectionHemispherical;
+}
+
+// The paper's sizes (§6.2): 256² for the 160° perspective view (45² pixels in its central 90°),
+// 64² for the hemispherical one.
+int viewSizeOf(const ParameterValues& p) {
+  const int size = p.integer("view_size");
+  if (size > 0) return size;
+  return projectionOf(p) == gpu::kProjectionPerspective ? 256 : 64;
+}
+
+}  // namespace
+
+HemisphericalGatherTechnique::HemisphericalGatherTechnique(const ParameterValues& p)
+    : projection_(projectionOf(p)),
+      view_size_(viewSizeOf(p)),
+      spacing_(p.integer("gather_spacing")),
+      atlas_resolution_(std::stoi(p.text("atlas"))),
+      tessellation_(p.integer("tessellation")),
+      light_samples_(p.integer("light_samples")),
+      lighting_(shadowSettings(p), p.integer("light_samples")) {}
+
+void HemisphericalGatherTechnique::prepare(const GpuScene& scene, int width, int height) {
+  scene_ = &scene;
+  gbuffer_.emplace(width, height);
+  lighting_.prepare(scene);
+  const float extent = std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-6f);
+
+  // The directly lit scene as a radiance atlas: ρ/π times the shadow-mapped direct irradiance of
+  // every texel, from the same light samples as the camera's direct light.
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<atlas::AtlasTriangle> triangles = atlas::atlasTriangles(scene.scene());
+  const atlas::AtlasLayout layout = atlas::layoutAtlas(triangles, atlas_resolution_);
+  atlas_.emplace(atlas::bakeAtlasTexels(triangles, layout), triangles, scene.scene());
+  mesh_.emplace(triangles, layout, tessellation_);
+  radiance_atlas_ = gl::Texture::make2D(GL_RGBA32F, atlas_resolution_, atlas_resolution_);
+  radiance_atlas_.setFilter(GL_LINEAR, GL_LINEAR);
+  const float zero[4] = {0, 0, 0, 0};
+  glClearTexImage(radiance_atlas_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  gl::Framebuffer atlas_target;
+  atlas_target.attachColor(0, radiance_atlas_);
+  atlas_target.setDrawBuffers(1);
+  atlas_target.checkComplete();
+  const std::vector<LightSample> samples = makeLightSamples(
+      scene.scene(), scene.emitters(), light_samples_, light_samples_, 1e-3f * extent);
+  if (!samples.empty()) {
+    ShadowSettings settings;
+    settings.filter = ShadowFilter::kPcf;
+    settings.size = 512;
+    atlas::AtlasLighting(settings, scene, samples.size())
+        .add(scene, samples, *atlas_, atlas_target);
+  }
+  glFinish();
+  prepare_atlas_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  gather_.emplace(projection_, view_size_, spacing_, width, height, extent);
+  interpolate_ =
+      gl::FullScreenPass("realtime/techniques/hemispherical_gather/gather_interpolate.frag.glsl");
+  const gl::Program& interpolate = interpolate_.program();
+  gather_->setPointUniforms(interpolate);
+  glProgramUniform1f(interpolate.id(), interpolate.uniform("u_plane_tolerance"), 0.01f * extent);
+}
+
+void HemisphericalGatherTechnique::render(Frame& frame) {
+  const GpuScene& scene = *scene_;
+  gbuffer_->render(scene, &frame.profiler);
+  lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
+  lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
+  gather_->gather(scene, *mesh_, radiance_atlas_, *gbuffer_, frame.profiler);
+
+  auto pass = frame.profiler.pass(kInterpolatePass);
+  scene.bindSceneBuffers();
+  gbuffer_->bindTextures();
+  gather_->irradiance().bind(gpu::kGatherIrradianceUnit);
+  gbuffer_->albedo().bind(gpu::kGBufferAlbedoUnit);
+  frame.target.bind();
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  interpolate_.draw();
+  glDisable(GL_BLEND);
+}
+
+std::vector<AuxiliaryImage> HemisphericalGatherTechnique::auxiliaryImages() {
+  return {{"gather-irradiance",
+           "irradiance at the gather points (one pixel per point, the grid over the image)",
+           gl::readTexture(gather_->irradiance(), 3)},
+          {"radiance-atlas", "the directly lit scene the gather views see (ρ/π · direct E)",
+           gl::readTexture(radiance_atlas_, 3)}};
+}
+
+std::vector<TechniqueStatistic> HemisphericalGatherTechnique::statistics() const {
+  const glm::ivec2 grid = gather_ ? gather_->grid() : glm::ivec2(0);
+  return {{"gather_points", double(grid.x * grid.y)},
+          {"view_size", double(view_size_)},
+          {"points_per_batch", double(gather_ ? gather_->pointsPerBatch() : 0)},
+          {"view_triangles", double(mesh_ ? mesh_->vertexCount() / 3 : 0)},
+          {"prepare_atlas_ms", prepare_atlas_ms_}};
+}
+
+TechniqueInfo hemisphericalGatherTechniqueInfo() {
+  TechniqueInfo info;
+  info.name = "hemispherical_gather";
+  info.description =
+      "direct light plus one bounce (up to LDDE) gathered by rendering the directly lit scene "
+      "around sparse points: 160° perspective or fish-eye (hemispherical) views";
+  info.source =
+      "Fournier & Péroche, Speeding up global illumination computations using programmable "
+      "GPUs, §5";
+  info.parameters = {
+      choiceParameter("projection", "hemispherical", {"perspective", "hemispherical"},
+                      "gather view: a 160° pinhole along the normal, or the fish-eye projection "
+                      "whose pixels all weigh the same"),
+      numericParameter("view_size", ParameterType::kInteger, "0", 0, 1024, "pixels",
+                       "gather view side; 0: the paper's, 256 perspective and 64 hemispherical"),
+      numericParameter("gather_spacing", ParameterType::kInteger, "8", 1, 64, "pixels",
+                       "one gather point per spacing × spacing block of the image"),
+      choiceParameter("atlas", "256", {"64", "128", "256", "512", "1024"},
+                      "radiance atlas texels per side (the directly lit scene the views see)"),
+      numericParameter(
+          "tessellation", ParameterType::kInteger, "3", 0, 4, "levels",
+          "each triangle split into 4^levels for the views (the fish-eye bends edges)"),
+  };
+  for (const ParameterSpec& spec : directLightingParameters()) info.parameters.push_back(spec);
+  info.passes.add(passPath({kFramePass, kGBufferPass}), "what each pixel's primary ray hits");
+  DirectLighting::declarePasses(info.passes, kFramePass);
+  const std::string gather = passPath({kFramePass, kGatherPass});
+  info.passes.add(gather, "per batch of gather points: their views, then their sums");
+  info.passes.add(passPath({gather, kGatherViewsPass}),
+                  "the directly lit scene drawn around each gather point, a layer each");
+  info.passes.add(passPath({gather, kGatherSumPass}),
+                  "each view summed into irradiance (cos θ dω per pixel)");
+  info.passes.add(passPath({kFramePass, kInterpolatePass}),
+                  "irradiance interpolated to every pixel, times ρ/π, added to the frame");
+  info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
+    return std::make_unique<HemisphericalGatherTechnique>(values);
+  };
+  return info;
+}
+
+}  // namespace gib::rt

@@ -1,0 +1,53 @@
+// `hemispherical_gather`: one bounce of indirect light gathered by the rasterizer (Fournier &
+// Péroche §5): the directly lit scene (a radiance atlas, ρ/π times the shadow-mapped direct
+// irradiance) is rendered around sparse gather points of the image, a 160° perspective view or
+// a fish-eye (hemispherical) view of the tessellated scene, one layer per point and one instanced
+// draw per batch; a compute pass sums each view into irradiance, and a full-screen pass
+// interpolates it to every pixel. Direct light and emission as `direct` renders them. See
+// README.md beside this file.
+#pragma once
+
+#include "realtime/atlas/atlas_layout.h"
+#include "realtime/atlas/atlas_mesh.h"
+#include "realtime/atlas/atlas_textures.h"
+#include "realtime/gbuffer/gbuffer.h"
+#include "realtime/gl/fullscreen_pass.h"
+#include "realtime/lighting/direct_lighting.h"
+#include "realtime/technique.h"
+#include "realtime/techniques/hemispherical_gather/hemisphere_gather.h"
+
+#include <optional>
+
+namespace gib::rt {
+
+class HemisphericalGatherTechnique final : public Technique {
+ public:
+  explicit HemisphericalGatherTechnique(const ParameterValues& parameters);
+
+  void prepare(const GpuScene& scene, int width, int height) override;
+  void render(Frame& frame) override;
+  scene::PathClass pathClass() const override { return {0, 2}; }
+  std::vector<AuxiliaryImage> auxiliaryImages() override;
+  std::vector<TechniqueStatistic> statistics() const override;
+
+ private:
+  int projection_;  // gpu::kProjection*
+  int view_size_;
+  int spacing_;
+  int atlas_resolution_;
+  int tessellation_;
+  int light_samples_;
+  DirectLighting lighting_;
+  const GpuScene* scene_ = nullptr;
+  std::optional<GBuffer> gbuffer_;
+  std::optional<atlas::AtlasTextures> atlas_;
+  std::optional<atlas::AtlasMesh> mesh_;
+  gl::Texture radiance_atlas_;
+  double prepare_atlas_ms_ = 0;
+  std::optional<HemisphereGather> gather_;
+  gl::FullScreenPass interpolate_;
+};
+
+TechniqueInfo hemisphericalGatherTechniqueInfo();
+
+}  // namespace gib::rt
