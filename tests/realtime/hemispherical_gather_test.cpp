@@ -151,9 +151,10 @@ TechniqueRunResult renderTechnique(const scene::Scene& scene, const std::string&
   return runTechnique(scene, info, values, settings);
 }
 
-// On the Cornell box against the reference restricted to two bounces, each projection's image is
-// less than half as far (relMSE) as `direct`'s, which leaves the bounce out, and its path class
-// is LE + LDE + LDDE. The reference is a fixed render (seed 0), so this is deterministic.
+// On the Cornell box against the reference restricted to two bounces, each projection's image (the
+// voxel slices' too: 64 slabs of 64² per axis, the box's near geometry drawn) is less than half as
+// far (relMSE) as `direct`'s, which leaves the bounce out, and its path class is LE + LDE + LDDE.
+// The reference is a fixed render (seed 0), so this is deterministic.
 TEST(HemisphericalGatherTechnique, OneGatheredBounceHalvesTheErrorOfDirectLightAlone) {
   const scene::Scene scene = scene::loadScene("cornell", {});
   const int size = 48;
@@ -165,7 +166,8 @@ TEST(HemisphericalGatherTechnique, OneGatheredBounceHalvesTheErrorOfDirectLightA
   const double direct =
       metrics::computeRelMse(reference.mean, renderTechnique(scene, "direct", {}, size).image)
           .value;
-  for (const char* projection : {"projection=hemispherical", "projection=perspective"}) {
+  for (const char* projection :
+       {"projection=hemispherical", "projection=perspective", "projection=voxel_slices"}) {
     const TechniqueRunResult r =
         renderTechnique(scene, "hemispherical_gather", {projection, "gather_spacing=4"}, size);
     EXPECT_EQ(r.path_class, (scene::PathClass{0, 2}));
@@ -177,21 +179,36 @@ TEST(HemisphericalGatherTechnique, OneGatheredBounceHalvesTheErrorOfDirectLightA
 
 // The furnace (walls of albedo 0.5 emitting 0.5): up to two bounces L = 0.5 + 0.25 + 0.125 =
 // 0.875 at every pixel; the perspective view's 160° gathers 3.0642/π of the bounce (the uniform
-// background test's figure). Within 1%: the direct part is 16 shadow-mapped light samples over
-// the sphere's thousand emitting triangles.
+// background test's figure). The voxel slices must leave no hole in the fish-eye view where the
+// near geometry hands over to the slices. Within 1%: the direct part is 16 shadow-mapped light
+// samples over the sphere's thousand emitting triangles.
 TEST(HemisphericalGatherTechnique, TheFurnaceGathersItsSecondBounce) {
   const scene::Scene scene = scene::loadScene("furnace", {});
   const double sin80 = std::sin(80.0 * kPi / 180.0);
   for (const auto& [projection, share] :
-       {std::pair{"projection=hemispherical", 1.0},
+       {std::pair{"projection=hemispherical", 1.0}, std::pair{"projection=voxel_slices", 1.0},
         std::pair{"projection=perspective", 4 * sin80 * std::atan(sin80) / kPi}}) {
     const image::Image image =
-        renderTechnique(scene, "hemispherical_gather", {projection}, 32).image;
+        renderTechnique(scene, "hemispherical_gather", {projection, "tessellation=1"}, 32).image;
     double sum = 0;
     for (float v : image.data()) sum += v;
     const double mean = sum / double(image.data().size());
     EXPECT_NEAR(mean, 0.75 + 0.125 * share, 0.01) << projection;
   }
+}
+
+// The slices hold what the paper sized: 6 faces × 64 slabs × 64² texels × 16 bytes = 25.2 MB.
+TEST(HemisphericalGatherTechnique, VoxelSlicesTakeThePapersMemory) {
+  const scene::Scene scene = scene::loadScene("cornell", {});
+  const TechniqueRunResult r =
+      renderTechnique(scene, "hemispherical_gather", {"projection=voxel_slices"}, 16);
+  bool found = false;
+  for (const TechniqueStatistic& s : r.statistics)
+    if (s.name == "voxel_slices_mb") {
+      EXPECT_DOUBLE_EQ(s.value, 6.0 * 64 * 64 * 64 * 16 / 1e6);
+      found = true;
+    }
+  EXPECT_TRUE(found);
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ void main() {
   for (int i = int(lane); i < u_size * u_size; i += kGatherSumGroupSize) {
     vec2 xy = (vec2(i % u_size, i / u_size) + 0.5) * pixel - 1.0;
     vec3 radiance = texelFetch(u_views, ivec3(i % u_size, i / u_size, layer), 0).rgb;
-    if (u_projection == kProjectionHemispherical) {
+    if (u_projection != kProjectionPerspective) {
       if (dot(xy, xy) < 1.0) {
         sum += radiance;
         count += 1.0;
@@ -50,7 +50,7 @@ void main() {
     barrier();
   }
   if (lane == 0u && point < u_grid.x * u_grid.y) {
-    vec3 irradiance = u_projection == kProjectionHemispherical
+    vec3 irradiance = u_projection != kProjectionPerspective
                           ? partial[0] * (3.14159265358979 / max(partial_count[0], 1.0))
                           : partial[0];
     imageStore(u_irradiance, ivec2(point % u_grid.x, point / u_grid.x), vec4(irradiance, 1.0));

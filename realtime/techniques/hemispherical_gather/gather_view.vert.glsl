@@ -12,13 +12,14 @@ uniform int u_first_point;
 uniform int u_projection;
 uniform float u_near;
 uniform float u_far;
+uniform vec3 u_near_box;  // voxel slices: half-size of the box around the point drawn as geometry
 out vec2 g_atlas_uv;
 out vec3 g_world;
 flat out vec3 g_normal;
 flat out int g_layer;
 out gl_PerVertex {
   vec4 gl_Position;
-  float gl_ClipDistance[1];
+  float gl_ClipDistance[kGatherClipDistances];
 };
 
 void main() {
@@ -29,13 +30,21 @@ void main() {
   GatherFrame f;
   if (!gatherFrame(u_first_point + gl_InstanceID, f)) {
     gl_Position = vec4(0.0);
-    gl_ClipDistance[0] = -1.0;
+    for (int i = 0; i < kGatherClipDistances; ++i) gl_ClipDistance[i] = -1.0;
     return;
   }
   vec3 d = vertex_position - f.origin;
   vec3 q = vec3(dot(d, f.t), dot(d, f.b), dot(d, f.n));
   gl_ClipDistance[0] = q.z;
-  if (u_projection == kProjectionHemispherical) {
+  // Voxel slices: only what lies in the box around the point is drawn as geometry (§5.3: the
+  // slices through the point's own voxel face away from it); farther away the slices stand in.
+  for (int axis = 0; axis < 3; ++axis) {
+    float offset = vertex_position[axis] - f.origin[axis];
+    bool boxed = u_projection == kProjectionVoxelSlices;
+    gl_ClipDistance[1 + 2 * axis] = boxed ? u_near_box[axis] + offset : 1.0;
+    gl_ClipDistance[2 + 2 * axis] = boxed ? u_near_box[axis] - offset : 1.0;
+  }
+  if (u_projection != kProjectionPerspective) {
     float r = max(length(q), 1e-12);
     gl_Position = vec4(q.xy / r, 2.0 * (r - u_near) / (u_far - u_near) - 1.0, 1.0);
   } else {

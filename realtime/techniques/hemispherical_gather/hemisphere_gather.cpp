@@ -3,9 +3,11 @@
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
+#include "realtime/techniques/hemispherical_gather/voxel_slices.h"
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace gib::rt {
 
@@ -22,6 +24,15 @@ void setUniform(const gl::Program& program, const char* name, float value) {
 }
 void setUniform(const gl::Program& program, const char* name, glm::ivec2 value) {
   glProgramUniform2i(program.id(), program.uniform(name), value.x, value.y);
+}
+void setUniform(const gl::Program& program, const char* name, glm::vec3 value) {
+  glProgramUniform3fv(program.id(), program.uniform(name), 1, &value[0]);
+}
+
+// The box around a gather point whose geometry the voxel-slice view draws itself: the point's
+// voxel grown by half a voxel on each side ("we expand a little the volume", §5.3).
+glm::vec3 nearBox(const VoxelSlices& slices) {
+  return 1.5f * (slices.boundsMax() - slices.boundsMin()) / float(slices.slices());
 }
 
 }  // namespace
@@ -61,6 +72,16 @@ HemisphereGather::HemisphereGather(int projection, int view_size, int spacing, i
   setUniform(sum_program_, "u_grid", grid_);
   setUniform(sum_program_, "u_size", view_size);
   setUniform(sum_program_, "u_projection", projection);
+  if (projection == gpu::kProjectionVoxelSlices) {
+    slices_program_ = gl::buildProgram(
+        {{GL_VERTEX_SHADER, "realtime/techniques/hemispherical_gather/gather_slices.vert.glsl"},
+         {GL_GEOMETRY_SHADER, "realtime/techniques/hemispherical_gather/gather_view.geom.glsl"},
+         {GL_FRAGMENT_SHADER, "realtime/techniques/hemispherical_gather/gather_slices.frag.glsl"}});
+    setPointUniforms(slices_program_);
+    setUniform(slices_program_, "u_size", view_size);
+    setUniform(slices_program_, "u_near", 1e-4f * extent);
+    setUniform(slices_program_, "u_far", 2.0f * extent);
+  }
 }
 
 void HemisphereGather::setPointUniforms(const gl::Program& program) const {
@@ -72,7 +93,17 @@ void HemisphereGather::setPointUniforms(const gl::Program& program) const {
 
 void HemisphereGather::gather(const GpuScene& scene, const atlas::AtlasMesh& mesh,
                               const gl::Texture& radiance_atlas, const GBuffer& gbuffer,
-                              gl::PassProfiler& profiler, const glm::vec3& background) {
+                              gl::PassProfiler& profiler, const glm::vec3& background,
+                              const VoxelSlices* slices) {
+  if (projection_ == gpu::kProjectionVoxelSlices && !slices)
+    throw std::logic_error("the voxel-slice projection needs the slices");
+  const int clip_distances =
+      projection_ == gpu::kProjectionVoxelSlices ? gpu::kGatherClipDistances : 1;
+  if (slices) {
+    setUniform(view_program_, "u_near_box", nearBox(*slices));
+    setUniform(slices_program_, "u_near_box", nearBox(*slices));
+    slices->setLookupUniforms(slices_program_);
+  }
   auto pass = profiler.pass(kGatherPass);
   const int points = grid_.x * grid_.y;
   for (int first = 0; first < points; first += batch_) {
@@ -95,9 +126,19 @@ void HemisphereGather::gather(const GpuScene& scene, const atlas::AtlasMesh& mes
       glDepthMask(GL_TRUE);
       glDisable(GL_CULL_FACE);  // both sides of every surface hide what is behind them
       glDisable(GL_BLEND);
-      glEnable(GL_CLIP_DISTANCE0);
+      for (int i = 0; i < clip_distances; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
       mesh.draw(count);
-      glDisable(GL_CLIP_DISTANCE0);
+      for (int i = 0; i < clip_distances; ++i) glDisable(GL_CLIP_DISTANCE0 + i);
+    }
+    if (slices) {
+      // Beyond the near box, the slices: one full-layer triangle per point, depth-tested
+      // against the near geometry.
+      auto traced = profiler.pass(kGatherSlicesPass);
+      slices->faces().bind(gpu::kVoxelSlicesUnit);
+      slices_program_.use();
+      setUniform(slices_program_, "u_first_point", first);
+      empty_vertex_array_.bind();
+      gl::drawArraysInstanced(GL_TRIANGLES, 0, 3, count);
     }
     auto sum = profiler.pass(kGatherSumPass);
     sum_program_.use();

@@ -21,6 +21,9 @@ namespace gib::rt {
 inline constexpr std::string_view kGatherPass = "gather";
 inline constexpr std::string_view kGatherViewsPass = "gather views";
 inline constexpr std::string_view kGatherSumPass = "gather sum";
+inline constexpr std::string_view kGatherSlicesPass = "gather slices";
+
+class VoxelSlices;
 
 class HemisphereGather {
  public:
@@ -29,10 +32,11 @@ class HemisphereGather {
   HemisphereGather(int projection, int view_size, int spacing, int width, int height, float extent);
 
   // Gathers at every grid point of `gbuffer` the radiance `radiance_atlas` gives the mesh's
-  // surfaces; the views are cleared to `background` where nothing is drawn.
+  // surfaces; the views are cleared to `background` where nothing is drawn. The voxel-slice
+  // projection draws the mesh near each point only, and `slices` beyond it.
   void gather(const GpuScene& scene, const atlas::AtlasMesh& mesh,
               const gl::Texture& radiance_atlas, const GBuffer& gbuffer, gl::PassProfiler& profiler,
-              const glm::vec3& background = glm::vec3(0.0f));
+              const glm::vec3& background = glm::vec3(0.0f), const VoxelSlices* slices = nullptr);
 
   // RGBA32F, grid().x × grid().y: irradiance at each point (w 1 where a point was gathered).
   const gl::Texture& irradiance() const { return irradiance_; }
@@ -49,7 +53,8 @@ class HemisphereGather {
   int batch_ = 0;
   gl::Texture views_, views_depth_, irradiance_;
   gl::Framebuffer framebuffer_;
-  gl::Program view_program_, sum_program_;
+  gl::Program view_program_, sum_program_, slices_program_;
+  gl::VertexArray empty_vertex_array_;
 };
 
 }  // namespace gib::rt

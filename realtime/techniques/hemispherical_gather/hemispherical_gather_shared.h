@@ -16,6 +16,15 @@ const int kGBufferAlbedoUnit = kTechniqueFirstUnit + 3;     // the camera G-buff
 // How a gather view maps directions around the normal to its image (§5.2, Fig. 3).
 const int kProjectionPerspective = 0;    // a 160° pinhole camera along the normal
 const int kProjectionHemispherical = 1;  // fish-eye: the unit direction's tangent coordinates
+const int kProjectionVoxelSlices = 2;    // fish-eye of the voxel slices, near objects drawn (§5.3)
+
+// The voxel slices (§5.3): one array texture, layer face · slices + k for slab k, face 2·axis +
+// side, side 0 the slab seen from its low side (looking along +axis), side 1 from its high side.
+// The views' unit: the pass that draws slices and the pass that sums views never share a program.
+const int kVoxelSlicesUnit = kTechniqueFirstUnit + 1;
+const int kSliceFaces = 6;
+// Clip distances of a gather view: the horizon, then the near box's six planes (voxel slices).
+const int kGatherClipDistances = 7;
 
 const float kPerspectiveFieldOfViewDegrees = 160.0f;
 const int kGatherSumGroupSize = 64;

@@ -19,16 +19,24 @@ namespace {
 constexpr std::string_view kInterpolatePass = "interpolation";
 
 int projectionOf(const ParameterValues& p) {
-  return p.text("projection") == "perspective" ? gpu::kProjectionPerspective
-                                               : gpu::kProjectionHemispherical;
+  const std::string& name = p.text("projection");
+  if (name == "perspective") return gpu::kProjectionPerspective;
+  return name == "voxel_slices" ? gpu::kProjectionVoxelSlices : gpu::kProjectionHemispherical;
 }
 
 // The paper's sizes (§6.2): 256² for the 160° perspective view (45² pixels in its central 90°),
-// 64² for the hemispherical one.
+// 64² for the hemispherical one, 40² for the voxel slices' ("visually satisfying").
 int viewSizeOf(const ParameterValues& p) {
   const int size = p.integer("view_size");
   if (size > 0) return size;
-  return projectionOf(p) == gpu::kProjectionPerspective ? 256 : 64;
+  switch (projectionOf(p)) {
+    case gpu::kProjectionPerspective:
+      return 256;
+    case gpu::kProjectionVoxelSlices:
+      return 40;
+    default:
+      return 64;
+  }
 }
 
 }  // namespace
@@ -40,6 +48,8 @@ HemisphericalGatherTechnique::HemisphericalGatherTechnique(const ParameterValues
       atlas_resolution_(std::stoi(p.text("atlas"))),
       tessellation_(p.integer("tessellation")),
       light_samples_(p.integer("light_samples")),
+      slices_(p.integer("slices")),
+      slice_size_(p.integer("slice_size")),
       lighting_(shadowSettings(p), p.integer("light_samples")) {}
 
 void HemisphericalGatherTechnique::prepare(const GpuScene& scene, int width, int height) {
@@ -76,6 +86,11 @@ void HemisphericalGatherTechnique::prepare(const GpuScene& scene, int width, int
   prepare_atlas_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
+  // The slices need no tessellation (orthographic views keep edges straight): built from the
+  // scene's own triangles, 4^levels fewer than the views draw.
+  if (projection_ == gpu::kProjectionVoxelSlices)
+    voxels_.emplace(scene, atlas::AtlasMesh(triangles, layout, 0), radiance_atlas_, slices_,
+                    slice_size_);
   gather_.emplace(projection_, view_size_, spacing_, width, height, extent);
   interpolate_ =
       gl::FullScreenPass("realtime/techniques/hemispherical_gather/gather_interpolate.frag.glsl");
@@ -89,7 +104,8 @@ void HemisphericalGatherTechnique::render(Frame& frame) {
   gbuffer_->render(scene, &frame.profiler);
   lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
   lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
-  gather_->gather(scene, *mesh_, radiance_atlas_, *gbuffer_, frame.profiler);
+  gather_->gather(scene, *mesh_, radiance_atlas_, *gbuffer_, frame.profiler, glm::vec3(0.0f),
+                  voxels_ ? &*voxels_ : nullptr);
 
   auto pass = frame.profiler.pass(kInterpolatePass);
   scene.bindSceneBuffers();
@@ -118,7 +134,9 @@ std::vector<TechniqueStatistic> HemisphericalGatherTechnique::statistics() const
           {"view_size", double(view_size_)},
           {"points_per_batch", double(gather_ ? gather_->pointsPerBatch() : 0)},
           {"view_triangles", double(mesh_ ? mesh_->vertexCount() / 3 : 0)},
-          {"prepare_atlas_ms", prepare_atlas_ms_}};
+          {"prepare_atlas_ms", prepare_atlas_ms_},
+          {"prepare_voxels_ms", voxels_ ? voxels_->buildMilliseconds() : 0.0},
+          {"voxel_slices_mb", voxels_ ? double(voxels_->bytes()) / 1e6 : 0.0}};
 }
 
 TechniqueInfo hemisphericalGatherTechniqueInfo() {
@@ -131,11 +149,18 @@ TechniqueInfo hemisphericalGatherTechniqueInfo() {
       "Fournier & Péroche, Speeding up global illumination computations using programmable "
       "GPUs, §5";
   info.parameters = {
-      choiceParameter("projection", "hemispherical", {"perspective", "hemispherical"},
-                      "gather view: a 160° pinhole along the normal, or the fish-eye projection "
-                      "whose pixels all weigh the same"),
+      choiceParameter("projection", "hemispherical",
+                      {"perspective", "hemispherical", "voxel_slices"},
+                      "gather view: a 160° pinhole along the normal, the fish-eye projection "
+                      "whose pixels all weigh the same, or the fish-eye of voxel slices with "
+                      "the objects near the point drawn"),
       numericParameter("view_size", ParameterType::kInteger, "0", 0, 1024, "pixels",
-                       "gather view side; 0: the paper's, 256 perspective and 64 hemispherical"),
+                       "gather view side; 0: the paper's, 256 perspective, 64 hemispherical, 40 "
+                       "voxel slices"),
+      numericParameter("slices", ParameterType::kInteger, "64", 2, 512, "",
+                       "voxel slices: slabs per axis (the paper's 64)"),
+      numericParameter("slice_size", ParameterType::kInteger, "64", 4, 1024, "texels",
+                       "voxel slices: each face's side (the paper's 64)"),
       numericParameter("gather_spacing", ParameterType::kInteger, "8", 1, 64, "pixels",
                        "one gather point per spacing × spacing block of the image"),
       choiceParameter("atlas", "256", {"64", "128", "256", "512", "1024"},
@@ -151,6 +176,8 @@ TechniqueInfo hemisphericalGatherTechniqueInfo() {
   info.passes.add(gather, "per batch of gather points: their views, then their sums");
   info.passes.add(passPath({gather, kGatherViewsPass}),
                   "the directly lit scene drawn around each gather point, a layer each");
+  info.passes.add(passPath({gather, kGatherSlicesPass}),
+                  "voxel slices: each view's pixels traced through the slices beyond the near box");
   info.passes.add(passPath({gather, kGatherSumPass}),
                   "each view summed into irradiance (cos θ dω per pixel)");
   info.passes.add(passPath({kFramePass, kInterpolatePass}),

@@ -15,6 +15,7 @@
 #include "realtime/lighting/direct_lighting.h"
 #include "realtime/technique.h"
 #include "realtime/techniques/hemispherical_gather/hemisphere_gather.h"
+#include "realtime/techniques/hemispherical_gather/voxel_slices.h"
 
 #include <optional>
 
@@ -37,6 +38,8 @@ class HemisphericalGatherTechnique final : public Technique {
   int atlas_resolution_;
   int tessellation_;
   int light_samples_;
+  int slices_;
+  int slice_size_;
   DirectLighting lighting_;
   const GpuScene* scene_ = nullptr;
   std::optional<GBuffer> gbuffer_;
@@ -44,6 +47,7 @@ class HemisphericalGatherTechnique final : public Technique {
   std::optional<atlas::AtlasMesh> mesh_;
   gl::Texture radiance_atlas_;
   double prepare_atlas_ms_ = 0;
+  std::optional<VoxelSlices> voxels_;
   std::optional<HemisphereGather> gather_;
   gl::FullScreenPass interpolate_;
 };
