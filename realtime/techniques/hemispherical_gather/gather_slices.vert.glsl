@@ -1,15 +1,6 @@
 // The voxel slices' pass of a gather view: a triangle over the whole layer of each gather point
 // of the batch (instance), for the fragment shader to trace the slices (gather_slices.frag.glsl).
-#include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
-
-out vec2 g_atlas_uv;
-out vec3 g_world;
-flat out vec3 g_normal;
-flat out int g_layer;
-out gl_PerVertex {
-  vec4 gl_Position;
-  float gl_ClipDistance[kGatherClipDistances];
-};
+#include "realtime/techniques/hemispherical_gather/layered_vertex_outputs.glsl"
 
 void main() {
   vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);

@@ -4,7 +4,7 @@
 // are its image position (the unit disk), so every pixel stands for the same cosine-weighted solid
 // angle; depth is the distance, written linearly with w = 1 so that nothing is clipped but what is
 // below the horizon (gl_ClipDistance).
-#include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
+#include "realtime/techniques/hemispherical_gather/layered_vertex_outputs.glsl"
 #include "realtime/techniques/hemispherical_gather/gather_point.glsl"
 #include "realtime/atlas/atlas_vertex.glsl"
 
@@ -13,14 +13,6 @@ uniform int u_projection;
 uniform float u_near;
 uniform float u_far;
 uniform vec3 u_near_box;  // voxel slices: half-size of the box around the point drawn as geometry
-out vec2 g_atlas_uv;
-out vec3 g_world;
-flat out vec3 g_normal;
-flat out int g_layer;
-out gl_PerVertex {
-  vec4 gl_Position;
-  float gl_ClipDistance[kGatherClipDistances];
-};
 
 void main() {
   g_atlas_uv = vertex_atlas_uv;

@@ -1,7 +1,7 @@
 // Voxelisation (§5.3): the scene seen by an orthographic view along axis u_axis from side
 // u_side (0: from below, looking along +axis), into layer u_face · u_slices + instance, the slab
 // that the fragment shader keeps.
-#include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
+#include "realtime/techniques/hemispherical_gather/layered_vertex_outputs.glsl"
 #include "realtime/gpu_scene/scene.glsl"
 #include "realtime/atlas/atlas_vertex.glsl"
 
@@ -11,14 +11,6 @@ uniform int u_face;
 uniform int u_slices;
 uniform vec3 u_bounds_min;
 uniform vec3 u_bounds_max;
-out vec2 g_atlas_uv;
-out vec3 g_world;
-flat out vec3 g_normal;
-flat out int g_layer;
-out gl_PerVertex {
-  vec4 gl_Position;
-  float gl_ClipDistance[kGatherClipDistances];
-};
 
 void main() {
   g_atlas_uv = vertex_atlas_uv;

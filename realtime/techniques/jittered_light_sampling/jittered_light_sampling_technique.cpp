@@ -141,33 +141,10 @@ void JitteredLightSamplingTechnique::sampleAreaLight(std::size_t index, const Re
     const int count = std::min(batch_, points_ - first);
     {
       auto coverage = profiler.pass(kCoveragePass);
-      const GLuint zero[4] = {0, 0, 0, 0};
-      const float far_depth = 1.0f;
-      glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, 0, zero);
-      glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
-      framebuffer_.bind();
-      glViewport(0, 0, coverage_.size, coverage_.size);
       draw_program_.use();
       glProgramUniform1i(draw_program_.id(), draw_program_.uniform("u_first_point"), first);
       vertex_array_.bind();
-      glDisable(GL_CULL_FACE);
-      glDisable(GL_BLEND);
-      glEnable(GL_DEPTH_TEST);
-      glEnable(GL_COLOR_LOGIC_OP);
-      // The light's samples in (OR, writing its depth), then the occluders in front of it take
-      // theirs out (AND NOT), without writing depth (§4.2.2).
-      glLogicOp(GL_OR);
-      glDepthFunc(GL_ALWAYS);
-      glDepthMask(GL_TRUE);
-      gl::drawArraysInstanced(GL_TRIANGLES, 0, light_vertices, count);
-      if (all_vertices > light_vertices) {
-        glLogicOp(GL_AND_INVERTED);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_FALSE);
-        gl::drawArraysInstanced(GL_TRIANGLES, light_vertices, all_vertices - light_vertices, count);
-      }
-      glDisable(GL_COLOR_LOGIC_OP);
-      glDepthMask(GL_TRUE);
+      drawCoverage(framebuffer_, coverage_.size, light_vertices, all_vertices, count);
     }
     auto weighing = profiler.pass(kWeighingPass);
     weigh_program_.use();

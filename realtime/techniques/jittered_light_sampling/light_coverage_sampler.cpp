@@ -82,6 +82,33 @@ void validateCoverageSize(int size) {
                     size, kMinCoverageSize, kMaxCoverageSize));
 }
 
+void drawCoverage(const gl::Framebuffer& framebuffer, int size, GLsizei light_vertices,
+                  GLsizei all_vertices, GLsizei instances) {
+  const GLuint zero[4] = {0, 0, 0, 0};
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, zero);
+  glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
+  framebuffer.bind();
+  glViewport(0, 0, size, size);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_COLOR_LOGIC_OP);
+  glLogicOp(GL_OR);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  gl::drawArraysInstanced(GL_TRIANGLES, 0, light_vertices, instances);
+  if (all_vertices > light_vertices) {
+    glLogicOp(GL_AND_INVERTED);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    gl::drawArraysInstanced(GL_TRIANGLES, light_vertices, all_vertices - light_vertices,
+                            instances);
+  }
+  glDisable(GL_COLOR_LOGIC_OP);
+  glDepthMask(GL_TRUE);
+}
+
 LightCoverageSampler::LightCoverageSampler(const std::vector<glm::vec3>& light,
                                            const std::vector<glm::vec3>& occluders,
                                            const CoverageSettings& settings)
@@ -147,52 +174,35 @@ LightCoverageSampler::View LightCoverageSampler::viewFrom(const glm::dvec3& x) c
 }
 
 void LightCoverageSampler::draw(const View& view, std::uint32_t point) {
-  const GLuint zero[4] = {0, 0, 0, 0};
-  const float far_depth = 1.0f;
-  glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, 0, zero);
-  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
-  framebuffer_.bind();
-  glViewport(0, 0, settings_.size, settings_.size);
   program_.use();
   const glm::vec3 x(view.x);
   glProgramUniform3fv(program_.id(), program_.uniform("u_point_position"), 1, &x[0]);
   glProgramUniform1ui(program_.id(), program_.uniform("u_point"), point);
   triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kCoverageTrianglesBinding);
   vertex_array_.bind();
+  if (settings_.scheme != CoverageScheme::kOcclusionQuery) {
+    drawCoverage(framebuffer_, settings_.size, light_vertices_,
+                 light_vertices_ + occluder_vertices_, 1);
+    return;
+  }
+  // §4.1.1: occluders set up the depth buffer, then the query counts the light's pixels that
+  // pass the depth test.
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
+  framebuffer_.bind();
+  glViewport(0, 0, settings_.size, settings_.size);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
-
-  if (settings_.scheme == CoverageScheme::kOcclusionQuery) {
-    // §4.1.1: occluders set up the depth buffer, then the query counts the light's pixels that
-    // pass the depth test.
-    glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    if (occluder_vertices_ > 0) gl::drawArrays(GL_TRIANGLES, light_vertices_, occluder_vertices_);
-    glDepthMask(GL_FALSE);
-    glBeginQuery(GL_SAMPLES_PASSED, visible_samples_.id());
-    gl::drawArrays(GL_TRIANGLES, 0, light_vertices_);
-    glEndQuery(GL_SAMPLES_PASSED);
-    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
-    return;
-  }
-  // §4.2.2 with integer logic operations: the light's triangles OR their sample bits in (and
-  // write the light's depth), then the occluders in front of it clear theirs (AND NOT), without
-  // writing depth, so that one occluder's partial pixel does not hide another's.
-  glEnable(GL_COLOR_LOGIC_OP);
-  glLogicOp(GL_OR);
-  glDepthFunc(GL_ALWAYS);
+  glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  if (occluder_vertices_ > 0) gl::drawArrays(GL_TRIANGLES, light_vertices_, occluder_vertices_);
+  glDepthMask(GL_FALSE);
+  glBeginQuery(GL_SAMPLES_PASSED, visible_samples_.id());
   gl::drawArrays(GL_TRIANGLES, 0, light_vertices_);
-  if (occluder_vertices_ > 0) {
-    glLogicOp(GL_AND_INVERTED);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
-    gl::drawArrays(GL_TRIANGLES, light_vertices_, occluder_vertices_);
-  }
-  glDisable(GL_COLOR_LOGIC_OP);
+  glEndQuery(GL_SAMPLES_PASSED);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
 }
 

@@ -52,6 +52,14 @@ struct CoveragePhaseTimes {
   double weight_ms = 0;
 };
 
+// Clears `framebuffer` (no bits, far depth) and draws a coverage image into each of its
+// `instances` layers with the current program and coverage triangles: the light's (vertices
+// [0, light_vertices)) OR their sample bits in and write the light's depth, then the occluders'
+// (up to all_vertices) in front of it take theirs out (AND NOT), without writing depth, so that
+// one occluder's partial pixel does not hide another's (§4.2.2, with integer logic operations).
+void drawCoverage(const gl::Framebuffer& framebuffer, int size, GLsizei light_vertices,
+                  GLsizei all_vertices, GLsizei instances);
+
 class LightCoverageSampler {
  public:
   // `light` and `occluders` are triangles (three world-space corners each); the light's are
