@@ -102,8 +102,7 @@ void drawCoverage(const gl::Framebuffer& framebuffer, int size, GLsizei light_ve
     glLogicOp(GL_AND_INVERTED);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_FALSE);
-    gl::drawArraysInstanced(GL_TRIANGLES, light_vertices, all_vertices - light_vertices,
-                            instances);
+    gl::drawArraysInstanced(GL_TRIANGLES, light_vertices, all_vertices - light_vertices, instances);
   }
   glDisable(GL_COLOR_LOGIC_OP);
   glDepthMask(GL_TRUE);
