@@ -40,10 +40,15 @@ std::vector<PassBar> phaseBars(const std::vector<SolidAngleBenchRow>& rows) {
 }
 
 std::string figureGrid(const std::vector<SolidAngleBenchFigure>& figures) {
-  std::string html = "<div class=\"figure-grid\">";
+  // Side by side, as the paper's Fig. 8 sets its three panels.
+  std::string html = fmt::format(
+      "<div class=\"figure-grid\" style=\"grid-template-columns: repeat({}, minmax(0, 1fr))\">",
+      figures.size());
   for (const SolidAngleBenchFigure& f : figures)
-    html += fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>",
-                        escapeHtml(urlPath(f.png)), escapeHtml(f.label), escapeHtml(f.label));
+    html += fmt::format(
+        "<figure><img src=\"{}\" alt=\"{}\" style=\"max-width: 100%\"><figcaption>{}</figcaption>"
+        "</figure>",
+        escapeHtml(urlPath(f.png)), escapeHtml(f.label), escapeHtml(f.label));
   html += "</div>";
   html +=
       "<p>|estimate − exact| over the receiving plane, seen from above (x to the right, z "
@@ -65,14 +70,16 @@ std::string solidAngleBenchPage(const std::vector<std::pair<std::string, std::st
   body += htmlSection("errors", "Error of the visible solid angle (Fig. 7)", errorTable(rows));
   if (!figures.empty())
     body += htmlSection("distribution", "The error over the plane (Fig. 8)", figureGrid(figures));
-  std::size_t samples = rows.empty() ? 0 : rows.front().timing_samples;
-  body += htmlSection(
-      "phases", "Time of each phase per point (Fig. 9)",
-      fmt::format("<p>Median and quartiles of {} points per scheme and size, wall clock of the "
-                  "calling thread: drawing finished with glFinish, the read-back, the CPU "
-                  "weighting.</p>",
-                  samples) +
-          passTimingChart(phaseBars(rows), "point"));
+  const std::size_t samples = rows.empty() ? 0 : rows.front().timing_samples;
+  const std::string phases =
+      samples == 0 ? std::string("<p>Not timed (<code>--timing-samples 0</code>).</p>")
+                   : fmt::format(
+                         "<p>Median and quartiles of {} points per scheme and size, wall clock of "
+                         "the calling thread: drawing finished with glFinish, the read-back, the "
+                         "CPU weighting.</p>",
+                         samples) +
+                         passTimingChart(phaseBars(rows), "point");
+  body += htmlSection("phases", "Time of each phase per point (Fig. 9)", phases);
   return htmlPage("Hardware sampling of an area light", body);
 }
 
