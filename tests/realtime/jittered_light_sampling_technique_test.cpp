@@ -7,6 +7,7 @@
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
+#include "support/render_statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -38,12 +39,6 @@ ref::RenderResult directReference(const scene::Scene& scene, int size, std::uint
   settings.spp = spp;
   settings.path_class = {0, 1};
   return ref::renderReference(scene, settings);
-}
-
-double meanOf(const image::Image& image) {
-  double sum = 0;
-  for (float v : image.data()) sum += v;
-  return sum / double(image.data().size());
 }
 
 // A 4 × 4 Lambertian floor (albedo 0.5) seen from above, under a 1 × 0.6 light at height 1.5
@@ -81,21 +76,21 @@ TEST(JitteredLightSamplingTechnique, AnUnoccludedAreaLightOverAPlaneMatchesTheRe
   const scene::Scene scene = lightOverFloor();
   const int size = 40;
   const ref::RenderResult reference = directReference(scene, size, 64);
-  double variance = 0;
-  for (float v : reference.variance.data()) variance += v;
-  const double se = std::sqrt(variance) / double(reference.variance.data().size());
-  const double m_ref = meanOf(reference.mean);
+  const test::ImageMean truth = test::imageMean(reference);
+  const double se = truth.standard_error, m_ref = truth.mean;
   for (const char* scheme : {"scheme=regular", "scheme=jittered"}) {
     const TechniqueRunResult r = render(scene, "jittered_light_sampling", {scheme}, size);
     EXPECT_EQ(r.path_class, (scene::PathClass{0, 1}));
-    EXPECT_NEAR(meanOf(r.image), m_ref, 4 * se + 0.005 * m_ref) << scheme;
+    EXPECT_NEAR(test::imageMean(r.image), m_ref, 4 * se + 0.005 * m_ref) << scheme;
     EXPECT_LT(metrics::computeMape(reference.mean, r.image).value, 0.03) << scheme;
     EXPECT_EQ(image::countNonFinite(r.image), 0u);
   }
   const double regular = std::abs(
-      meanOf(render(scene, "jittered_light_sampling", {"scheme=regular"}, size).image) - m_ref);
+      test::imageMean(render(scene, "jittered_light_sampling", {"scheme=regular"}, size).image) -
+      m_ref);
   const double query = std::abs(
-      meanOf(render(scene, "jittered_light_sampling", {"scheme=occlusion_query"}, size).image) -
+      test::imageMean(
+          render(scene, "jittered_light_sampling", {"scheme=occlusion_query"}, size).image) -
       m_ref);
   EXPECT_LT(query, 0.05 * m_ref);
   EXPECT_GT(query, regular);
