@@ -11,6 +11,7 @@
 #include "image/display.h"
 #include "image/false_color.h"
 #include "image/output_files.h"
+#include "metrics/timing_statistics.h"
 #include "realtime/gl/context.h"
 #include "realtime/techniques/jittered_light_sampling/solid_angle_bench.h"
 #include "reports/solid_angle_bench_page.h"
@@ -75,22 +76,23 @@ reports::SolidAngleBenchRow rowOf(const rt::SchemeMeasurement& m) {
   r.sd_error = m.sd_error;
   r.max_abs_error = m.max_abs_error;
   r.mean_exact = m.mean_exact;
-  auto copy = [](const rt::SchemeMeasurement::Quartiles& q, double* out) {
-    out[0] = q.first;
-    out[1] = q.median;
-    out[2] = q.third;
+  if (m.phase_times.empty()) return r;  // not timed
+  auto summary = [&](double rt::CoveragePhaseTimes::*phase) {
+    std::vector<double> samples;
+    for (const rt::CoveragePhaseTimes& t : m.phase_times) samples.push_back(t.*phase);
+    return metrics::summarizeTimings(samples);
   };
-  copy(m.render_ms, r.render_ms);
-  copy(m.read_back_ms, r.read_back_ms);
-  copy(m.weight_ms, r.weight_ms);
-  r.timing_samples = m.timing_samples;
+  r.render_ms = summary(&rt::CoveragePhaseTimes::render_ms);
+  r.read_back_ms = summary(&rt::CoveragePhaseTimes::read_back_ms);
+  r.weight_ms = summary(&rt::CoveragePhaseTimes::weight_ms);
   return r;
 }
 
 nlohmann::json rowJson(const reports::SolidAngleBenchRow& r) {
-  auto phase = [](const double* q) {
-    return nlohmann::json{
-        {"first_quartile_ms", q[0]}, {"median_ms", q[1]}, {"third_quartile_ms", q[2]}};
+  auto phase = [](const metrics::TimingSummary& t) {
+    return nlohmann::json{{"first_quartile_ms", t.first_quartile},
+                          {"median_ms", t.median},
+                          {"third_quartile_ms", t.third_quartile}};
   };
   return {{"scheme", r.scheme},
           {"size", r.size},
@@ -99,7 +101,7 @@ nlohmann::json rowJson(const reports::SolidAngleBenchRow& r) {
           {"sd_error_sr", r.sd_error},
           {"max_abs_error_sr", r.max_abs_error},
           {"mean_exact_sr", r.mean_exact},
-          {"timing_samples", r.timing_samples},
+          {"timing_samples", r.render_ms.count},
           {"render", phase(r.render_ms)},
           {"read_back", phase(r.read_back_ms)},
           {"weight", phase(r.weight_ms)}};
@@ -209,7 +211,7 @@ int runSolidAngleBench(SolidAngleBenchOptions& o) {
     fmt::print(
         "{:<16} {:>5} {:>12.3e} {:>12.3e} {:>12.3e} {:>+12.2e} {:>10.4f} {:>10.4f} {:>10.4f}\n",
         r.scheme, r.size, r.mean_abs_error, r.sd_error, r.max_abs_error, r.mean_error,
-        r.render_ms[1], r.read_back_ms[1], r.weight_ms[1]);
+        r.render_ms.median, r.read_back_ms.median, r.weight_ms.median);
   fmt::print("wrote {}\n", (fs::path(o.out) / "index.html").string());
   return 0;
 }

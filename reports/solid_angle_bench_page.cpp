@@ -30,11 +30,12 @@ std::string errorTable(const std::vector<SolidAngleBenchRow>& rows) {
 std::vector<PassBar> phaseBars(const std::vector<SolidAngleBenchRow>& rows) {
   std::vector<PassBar> bars;
   for (const SolidAngleBenchRow& r : rows) {
-    const double total = r.render_ms[1] + r.read_back_ms[1] + r.weight_ms[1];
+    const double total = r.render_ms.median + r.read_back_ms.median + r.weight_ms.median;
     bars.push_back({fmt::format("{} {}²", r.scheme, r.size), 0, total, total, total});
-    bars.push_back({"render", 1, r.render_ms[1], r.render_ms[0], r.render_ms[2]});
-    bars.push_back({"read back", 1, r.read_back_ms[1], r.read_back_ms[0], r.read_back_ms[2]});
-    bars.push_back({"weight", 1, r.weight_ms[1], r.weight_ms[0], r.weight_ms[2]});
+    for (const auto& [name, phase] :
+         {std::pair{"render", &r.render_ms}, std::pair{"read back", &r.read_back_ms},
+          std::pair{"weight", &r.weight_ms}})
+      bars.push_back({name, 1, phase->median, phase->first_quartile, phase->third_quartile});
   }
   return bars;
 }
@@ -70,7 +71,7 @@ std::string solidAngleBenchPage(const std::vector<std::pair<std::string, std::st
   body += htmlSection("errors", "Error of the visible solid angle (Fig. 7)", errorTable(rows));
   if (!figures.empty())
     body += htmlSection("distribution", "The error over the plane (Fig. 8)", figureGrid(figures));
-  const std::size_t samples = rows.empty() ? 0 : rows.front().timing_samples;
+  const std::size_t samples = rows.empty() ? 0 : rows.front().render_ms.count;
   const std::string phases =
       samples == 0 ? std::string("<p>Not timed (<code>--timing-samples 0</code>).</p>")
                    : fmt::format(

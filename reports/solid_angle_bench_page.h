@@ -3,6 +3,8 @@
 // the error over the receiving plane, and the median time of each phase.
 #pragma once
 
+#include "metrics/timing_statistics.h"
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,11 +16,8 @@ struct SolidAngleBenchRow {
   int size = 0;        // pixels a side of the sampling image
   double mean_abs_error = 0, mean_error = 0, sd_error = 0, max_abs_error = 0;  // steradians
   double mean_exact = 0;
-  // {first quartile, median, third quartile} of each phase, milliseconds per point.
-  double render_ms[3] = {0, 0, 0};
-  double read_back_ms[3] = {0, 0, 0};
-  double weight_ms[3] = {0, 0, 0};
-  std::size_t timing_samples = 0;
+  // Each phase's milliseconds per point (count 0: not timed).
+  metrics::TimingSummary render_ms, read_back_ms, weight_ms;
 };
 
 struct SolidAngleBenchFigure {

@@ -7,23 +7,7 @@
 
 namespace gib::rt {
 
-namespace {
-
-// Linear interpolation between order statistics (the usual definition of a sample quantile).
-double quantile(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) return 0;
-  const double position = q * double(sorted.size() - 1);
-  const auto below = std::size_t(position);
-  const std::size_t above = std::min(below + 1, sorted.size() - 1);
-  return sorted[below] + (position - double(below)) * (sorted[above] - sorted[below]);
-}
-
-SchemeMeasurement::Quartiles quartiles(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return {quantile(values, 0.25), quantile(values, 0.5), quantile(values, 0.75)};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<glm::vec3> quadTriangles(const std::vector<glm::dvec3>& q) {
   return {glm::vec3(q[0]), glm::vec3(q[1]), glm::vec3(q[2]),
@@ -38,18 +22,13 @@ SchemeMeasurement measureScheme(const scene::OccludedLightBench& bench,
   LightCoverageSampler sampler(quadTriangles(bench.light), quadTriangles(bench.occluder), settings);
   const std::vector<glm::dvec3> points = scene::occludedLightBenchPoints(bench);
   const std::size_t total = std::max(timing_samples, points.size());
-  std::vector<double> render, read_back, weight;
   for (std::size_t i = 0; i < total; ++i) {
     const std::size_t p = i % points.size();
     CoveragePhaseTimes t;
     // Later passes draw new jitter (the point's index keeps counting), as a progressive
     // renderer resampling a point would.
     const double estimate = sampler.visibleSolidAngle(points[p], std::uint32_t(i), &t);
-    if (i < timing_samples) {
-      render.push_back(t.render_ms);
-      read_back.push_back(t.read_back_ms);
-      weight.push_back(t.weight_ms);
-    }
+    if (i < timing_samples) m.phase_times.push_back(t);
     if (i < points.size()) {
       const double exact = scene::visibleSolidAngle(points[p], bench.light, bench.occluder);
       m.errors.push_back(estimate - exact);
@@ -66,10 +45,6 @@ SchemeMeasurement measureScheme(const scene::OccludedLightBench& bench,
   double squares = 0;
   for (double e : m.errors) squares += (e - m.mean_error) * (e - m.mean_error);
   m.sd_error = n > 1 ? std::sqrt(squares / (n - 1)) : 0;
-  m.render_ms = quartiles(render);
-  m.read_back_ms = quartiles(read_back);
-  m.weight_ms = quartiles(weight);
-  m.timing_samples = render.size();
   return m;
 }
 

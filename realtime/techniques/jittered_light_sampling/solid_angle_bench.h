@@ -29,14 +29,10 @@ struct SchemeMeasurement {
   double sd_error = 0;    // standard deviation of the signed error over the plane
   double max_abs_error = 0;
   double mean_exact = 0;  // the mean exact visible solid angle, for scale
-  // Quartiles of each phase over `timing_samples` points' samples (the first pass over the points
-  // and further passes as needed): the paper reports medians, being unable to keep other threads
-  // from running during a measurement.
-  struct Quartiles {
-    double first = 0, median = 0, third = 0;
-  };
-  Quartiles render_ms, read_back_ms, weight_ms;
-  std::size_t timing_samples = 0;
+  // Each timed point's phases (the first pass over the points and further passes as needed), for
+  // medians: the paper reports medians, being unable to keep other threads from running during a
+  // measurement.
+  std::vector<CoveragePhaseTimes> phase_times;
 };
 
 // Runs one scheme over the bench's points; `progress` is called with points done. Needs a current
