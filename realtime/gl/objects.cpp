@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace gib::rt::gl {
@@ -218,6 +219,23 @@ std::uint64_t Query::result() const {
   GLuint64 value = 0;
   glGetQueryObjectui64v(id(), GL_QUERY_RESULT, &value);
   return value;
+}
+
+LayeredTarget::LayeredTarget(GLenum color_format, int size, int layers)
+    : color_(Texture::make2DArray(color_format, size, size, layers)),
+      depth_(Texture::make2DArray(GL_DEPTH_COMPONENT32F, size, size, layers)) {
+  color_.setFilter(GL_NEAREST, GL_NEAREST);
+  framebuffer_.attachColor(0, color_);
+  framebuffer_.attachDepth(depth_);
+  framebuffer_.setDrawBuffers(1);
+  framebuffer_.checkComplete();
+}
+
+int layersPerBatch(int items, double bytes_per_layer, double budget_bytes) {
+  GLint max_layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  const double fit = std::floor(budget_bytes / bytes_per_layer);
+  return int(std::max(1.0, std::min({double(max_layers), fit, double(items)})));
 }
 
 image::Image readPixels(const Framebuffer& framebuffer, int index, int width, int height,

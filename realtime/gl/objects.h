@@ -165,6 +165,29 @@ class Program {
   UniqueName<detail::deleteProgram> name_;
 };
 
+// `layers` square colour images with a depth array behind one layered framebuffer: a batch of
+// small views drawn at once, layer i by a draw's instance i (the layer chosen in the geometry
+// shader). The colour filters nearest: it is read texel by texel.
+class LayeredTarget {
+ public:
+  LayeredTarget(GLenum color_format, int size, int layers);
+
+  const Texture& color() const { return color_; }
+  const Framebuffer& framebuffer() const { return framebuffer_; }
+  int size() const { return color_.width(); }
+  int layers() const { return color_.depth(); }
+  // The colour layers alone, for a target drawn once (its depth is freed with the rest).
+  Texture takeColor() && { return std::move(color_); }
+
+ private:
+  Texture color_, depth_;
+  Framebuffer framebuffer_;
+};
+
+// How many of `items` small images one batch of array layers holds: as many as `budget_bytes`
+// allows at `bytes_per_layer` and the driver's GL_MAX_ARRAY_TEXTURE_LAYERS, at least one.
+int layersPerBatch(int items, double bytes_per_layer, double budget_bytes);
+
 // Reads colour attachment `index` of `framebuffer` (its first `channels` channels, as floats)
 // into an image with pixel (0,0) at the top left: GL's rows start at the bottom.
 image::Image readPixels(const Framebuffer& framebuffer, int index, int width, int height,

@@ -13,7 +13,7 @@ namespace gib::rt {
 
 namespace {
 
-// What a batch's views (RGBA32F and 32-bit depth) may take.
+// What a batch's views (RGBA32F and 32-bit depth: 20 bytes a texel) may take.
 constexpr double kBatchBudgetBytes = 128.0 * 1024 * 1024;
 
 void setUniform(const gl::Program& program, const char* name, int value) {
@@ -41,19 +41,8 @@ HemisphereGather::HemisphereGather(int projection, int view_size, int spacing, i
                                    int height, float extent)
     : projection_(projection), view_size_(view_size), spacing_(spacing), extent_(extent) {
   grid_ = {(width + spacing - 1) / spacing, (height + spacing - 1) / spacing};
-  GLint max_layers = 0;
-  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
-  const double layer_bytes = 20.0 * view_size * view_size;
-  batch_ =
-      int(std::max(1.0, std::min({double(max_layers), std::floor(kBatchBudgetBytes / layer_bytes),
-                                  double(grid_.x * grid_.y)})));
-  views_ = gl::Texture::make2DArray(GL_RGBA32F, view_size, view_size, batch_);
-  views_.setFilter(GL_NEAREST, GL_NEAREST);
-  views_depth_ = gl::Texture::make2DArray(GL_DEPTH_COMPONENT32F, view_size, view_size, batch_);
-  framebuffer_.attachColor(0, views_);
-  framebuffer_.attachDepth(views_depth_);
-  framebuffer_.setDrawBuffers(1);
-  framebuffer_.checkComplete();
+  batch_ = gl::layersPerBatch(grid_.x * grid_.y, 20.0 * view_size * view_size, kBatchBudgetBytes);
+  views_.emplace(GL_RGBA32F, view_size, batch_);
   irradiance_ = gl::Texture::make2D(GL_RGBA32F, grid_.x, grid_.y);
   irradiance_.setFilter(GL_NEAREST, GL_NEAREST);
   const float zero[4] = {0, 0, 0, 0};
@@ -112,9 +101,10 @@ void HemisphereGather::gather(const GpuScene& scene, const atlas::AtlasMesh& mes
       auto views = profiler.pass(kGatherViewsPass);
       const float clear[4] = {background.r, background.g, background.b, 0};
       const float far_depth = 1.0f;
-      glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
-      glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
-      framebuffer_.bind();
+      const gl::Framebuffer& framebuffer = views_->framebuffer();
+      glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
+      glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
+      framebuffer.bind();
       glViewport(0, 0, view_size_, view_size_);
       scene.bindSceneBuffers();
       gbuffer.bindTextures();
@@ -143,7 +133,7 @@ void HemisphereGather::gather(const GpuScene& scene, const atlas::AtlasMesh& mes
     auto sum = profiler.pass(kGatherSumPass);
     sum_program_.use();
     setUniform(sum_program_, "u_first_point", first);
-    views_.bind(gpu::kGatherViewsUnit);
+    views_->color().bind(gpu::kGatherViewsUnit);
     glBindImageTexture(gpu::kImageDestinationUnit, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RGBA32F);
     gl::dispatchCompute(GLuint(count), 1, 1);

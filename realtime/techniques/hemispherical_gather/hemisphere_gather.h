@@ -13,6 +13,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <optional>
 #include <string_view>
 
 namespace gib::rt {
@@ -51,8 +52,8 @@ class HemisphereGather {
   float extent_;
   glm::ivec2 grid_{0};
   int batch_ = 0;
-  gl::Texture views_, views_depth_, irradiance_;
-  gl::Framebuffer framebuffer_;
+  std::optional<gl::LayeredTarget> views_;  // RGBA32F, a layer per point of a batch
+  gl::Texture irradiance_;
   gl::Program view_program_, sum_program_, slices_program_;
   gl::VertexArray empty_vertex_array_;
 };

@@ -17,14 +17,8 @@ VoxelSlices::VoxelSlices(const GpuScene& scene, const atlas::AtlasMesh& mesh,
   const glm::vec3 pad = 1e-3f * (scene.boundsMax() - scene.boundsMin()) + 1e-6f;
   lo_ = scene.boundsMin() - pad;
   hi_ = scene.boundsMax() + pad;
-  faces_ = gl::Texture::make2DArray(GL_RGBA32F, size, size, kFaces * slices);
-  faces_.setFilter(GL_NEAREST, GL_NEAREST);
-  gl::Texture depth = gl::Texture::make2DArray(GL_DEPTH_COMPONENT32F, size, size, kFaces * slices);
-  gl::Framebuffer framebuffer;
-  framebuffer.attachColor(0, faces_);
-  framebuffer.attachDepth(depth);
-  framebuffer.setDrawBuffers(1);
-  framebuffer.checkComplete();
+  gl::LayeredTarget target(GL_RGBA32F, size, kFaces * slices);
+  const gl::Framebuffer& framebuffer = target.framebuffer();
   const float empty[4] = {0, 0, 0, 0};
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, empty);
@@ -54,6 +48,7 @@ VoxelSlices::VoxelSlices(const GpuScene& scene, const atlas::AtlasMesh& mesh,
     glProgramUniform1i(id, program.uniform("u_face"), face);
     mesh.draw(slices);
   }
+  faces_ = std::move(target).takeColor();
   glFinish();
   build_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

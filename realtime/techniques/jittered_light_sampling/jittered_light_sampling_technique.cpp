@@ -17,7 +17,7 @@ namespace {
 constexpr std::string_view kAreaLightsPass = "area lights";
 constexpr std::string_view kCoveragePass = "coverage";
 constexpr std::string_view kWeighingPass = "weighing";
-// What a batch's coverage layers (8-bit) and their depth (32-bit) may take.
+// What a batch's coverage layers (8-bit) and their depth (32-bit) may take (5 bytes a texel).
 constexpr double kBatchBudgetBytes = 64.0 * 1024 * 1024;
 
 CoverageSettings coverageSettings(const ParameterValues& p) {
@@ -62,20 +62,8 @@ void JitteredLightSamplingTechnique::prepare(const GpuScene& scene, int width, i
   lift_ = 1e-5f * extent;
   points_ = width * height;
 
-  GLint max_layers = 0;
-  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
-  const double layer_bytes = 5.0 * coverage_.size * coverage_.size;
-  batch_ =
-      int(std::max(1.0, std::min({double(max_layers), std::floor(kBatchBudgetBytes / layer_bytes),
-                                  double(points_)})));
-  coverage_layers_ = gl::Texture::make2DArray(GL_R8UI, coverage_.size, coverage_.size, batch_);
-  coverage_layers_.setFilter(GL_NEAREST, GL_NEAREST);  // an integer texture filters no other way
-  depth_layers_ =
-      gl::Texture::make2DArray(GL_DEPTH_COMPONENT32F, coverage_.size, coverage_.size, batch_);
-  framebuffer_.attachColor(0, coverage_layers_);
-  framebuffer_.attachDepth(depth_layers_);
-  framebuffer_.setDrawBuffers(1);
-  framebuffer_.checkComplete();
+  batch_ = gl::layersPerBatch(points_, 5.0 * coverage_.size * coverage_.size, kBatchBudgetBytes);
+  coverage_layers_.emplace(GL_R8UI, coverage_.size, batch_);
 
   draw_program_ = gl::buildProgram(
       {{GL_VERTEX_SHADER, "realtime/techniques/jittered_light_sampling/coverage.vert.glsl"},
@@ -144,12 +132,13 @@ void JitteredLightSamplingTechnique::sampleAreaLight(std::size_t index, const Re
       draw_program_.use();
       glProgramUniform1i(draw_program_.id(), draw_program_.uniform("u_first_point"), first);
       vertex_array_.bind();
-      drawCoverage(framebuffer_, coverage_.size, light_vertices, all_vertices, count);
+      drawCoverage(coverage_layers_->framebuffer(), coverage_.size, light_vertices, all_vertices,
+                   count);
     }
     auto weighing = profiler.pass(kWeighingPass);
     weigh_program_.use();
     glProgramUniform1i(weigh_program_.id(), weigh_program_.uniform("u_first_point"), first);
-    coverage_layers_.bind(gpu::kCoverageUnit);
+    coverage_layers_->color().bind(gpu::kCoverageUnit);
     glBindImageTexture(gpu::kImageDestinationUnit, target.color().id(), 0, GL_FALSE, 0,
                        GL_READ_WRITE, GL_RGBA32F);
     gl::dispatchCompute(GLuint(count), 1, 1);

@@ -38,8 +38,7 @@ class JitteredLightSamplingTechnique final : public Technique {
   int points_ = 0;
   float lift_ = 0;
   std::vector<gl::Buffer> light_buffers_;  // per light: its triangles, then its occluders
-  gl::Texture coverage_layers_, depth_layers_;
-  gl::Framebuffer framebuffer_;
+  std::optional<gl::LayeredTarget> coverage_layers_;  // 8-bit, a layer per point of a batch
   gl::VertexArray vertex_array_;
   gl::Program draw_program_, weigh_program_;
 };

@@ -128,12 +128,7 @@ LightCoverageSampler::LightCoverageSampler(const std::vector<glm::vec3>& light,
   occluder_vertices_ = GLsizei(occluders.size());
   triangles_ = gl::Buffer::fromVector(corners, 0);
 
-  coverage_ = gl::Texture::make2D(GL_R8UI, settings.size, settings.size);
-  depth_ = gl::Texture::make2D(GL_DEPTH_COMPONENT32F, settings.size, settings.size);
-  framebuffer_.attachColor(0, coverage_);
-  framebuffer_.attachDepth(depth_);
-  framebuffer_.setDrawBuffers(1);
-  framebuffer_.checkComplete();
+  coverage_.emplace(GL_R8UI, settings.size, 1);  // one point at a time: one layer
   program_ = gl::buildProgram(
       {{GL_VERTEX_SHADER, "realtime/techniques/jittered_light_sampling/coverage.vert.glsl"},
        {GL_GEOMETRY_SHADER, "realtime/techniques/jittered_light_sampling/coverage.geom.glsl"},
@@ -180,15 +175,15 @@ void LightCoverageSampler::draw(const View& view, std::uint32_t point) {
   triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kCoverageTrianglesBinding);
   vertex_array_.bind();
   if (settings_.scheme != CoverageScheme::kOcclusionQuery) {
-    drawCoverage(framebuffer_, settings_.size, light_vertices_,
+    drawCoverage(coverage_->framebuffer(), settings_.size, light_vertices_,
                  light_vertices_ + occluder_vertices_, 1);
     return;
   }
   // §4.1.1: occluders set up the depth buffer, then the query counts the light's pixels that
   // pass the depth test.
   const float far_depth = 1.0f;
-  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
-  framebuffer_.bind();
+  glClearNamedFramebufferfv(coverage_->framebuffer().id(), GL_DEPTH, 0, &far_depth);
+  coverage_->framebuffer().bind();
   glViewport(0, 0, settings_.size, settings_.size);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
@@ -256,8 +251,8 @@ double LightCoverageSampler::visibleSolidAngle(const glm::dvec3& x, std::uint32_
     query_count_ = visible_samples_.result();
   } else {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(coverage_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, GLsizei(pixels_.size()),
-                      pixels_.data());
+    glGetTextureImage(coverage_->color().id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
+                      GLsizei(pixels_.size()), pixels_.data());
   }
   const double read_back_ms = millisecondsSince(start);
 

@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -85,9 +86,7 @@ class LightCoverageSampler {
   glm::dvec3 first_edge_{0.0};
   std::vector<glm::dvec3> light_corners_;
   gl::Buffer triangles_;
-  gl::Texture coverage_;
-  gl::Texture depth_;
-  gl::Framebuffer framebuffer_;
+  std::optional<gl::LayeredTarget> coverage_;  // 8-bit
   gl::VertexArray vertex_array_;
   gl::Program program_;
   gl::Query visible_samples_;
