@@ -115,6 +115,8 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"kCoverageTrianglesBinding", kCoverageTrianglesBinding},
       {"kCoverageUnit", kCoverageUnit},
       {"kWeighGroupSize", kWeighGroupSize},
+      {"int(windowSolidAngle(vec4(-0.5, -0.3, 0.7, 0.4), 1.2) * 1e4 + 0.5)",
+       int(windowSolidAngle(vec4(-0.5f, -0.3f, 0.7f, 0.4f), 1.2f) * 1e4f + 0.5f)},
       {"kRadianceAtlasUnit", kRadianceAtlasUnit},
       {"kGBufferAlbedoUnit", kGBufferAlbedoUnit},
       {"kProjectionHemispherical", kProjectionHemispherical},

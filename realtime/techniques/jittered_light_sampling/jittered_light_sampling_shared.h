@@ -1,14 +1,19 @@
-// What the coverage shaders and the CPU weighting of jittered light sampling (Fournier & Péroche
-// §4) must agree on: where each sample of a pixel lies. The fragment shader tests the samples
-// against the light's and the occluders' triangles; the CPU weighs each visible sample by the
-// solid angle its stratum subtends at its own position, so both compute the same positions from
-// the same hash.
+// What the coverage shaders and the weighting of jittered light sampling (Fournier & Péroche §4),
+// on the GPU for the technique and on the CPU for the bench test, must agree on: where each
+// sample of a pixel lies (the fragment shader tests the samples against the light's and the
+// occluders' triangles; the weighting weighs each visible sample by the solid angle its stratum
+// subtends at its own position, so both compute the same positions from the same hash), and the
+// solid angle of the whole window, which the occlusion query's equal weights share out.
 #pragma once
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/host_device_shared.h"
 
 #ifdef __cplusplus
+#include <cmath>
+
 namespace gib::rt::gpu {
+using std::atan;
+using std::sqrt;
 #endif
 
 // One bit of the coverage image per sample: at most 8 (an 8-bit image, as the paper's).
@@ -56,6 +61,19 @@ GIB_SHARED_FUNCTION vec2 coverageSampleOffset(uint seed, uint point, uint pixel,
   float u = coverageUnitFloat(h);
   float v = coverageUnitFloat(coverageHash(h));
   return vec2((float(k % columns) + u) / float(columns), (float(k / columns) + v) / float(rows));
+}
+
+// The solid angle of the rectangle [0, a] × [0, b] in a plane at distance h, seen from the point
+// over its corner; odd in a and in b, so that corners combine with signs.
+GIB_SHARED_FUNCTION float cornerSolidAngle(float a, float b, float h) {
+  return atan(a * b / (h * sqrt(h * h + a * a + b * b)));
+}
+
+// The solid angle of a point's window [u0, u1] × [v0, v1] (window = (u0, v0, u1, v1)) in the
+// light's plane at distance d.
+GIB_SHARED_FUNCTION float windowSolidAngle(vec4 window, float d) {
+  return cornerSolidAngle(window.z, window.w, d) - cornerSolidAngle(window.x, window.w, d) -
+         cornerSolidAngle(window.z, window.y, d) + cornerSolidAngle(window.x, window.y, d);
 }
 
 #ifdef __cplusplus

@@ -23,12 +23,6 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The solid angle at the apex of the rectangle [0, a] × [0, b] in a plane at distance h, one
-// corner at the apex's foot; odd in a and in b, so that corners combine with signs.
-double cornerSolidAngle(double a, double b, double h) {
-  return std::atan(a * b / (h * std::sqrt(h * h + a * a + b * b)));
-}
-
 }  // namespace
 
 // The point's camera, as coverage_view.glsl builds it on the GPU (here in double, for the
@@ -206,8 +200,7 @@ double LightCoverageSampler::weigh(const View& view, std::uint32_t point) const 
   if (settings_.scheme == CoverageScheme::kOcclusionQuery) {
     // Every pixel worth the same: the window's solid angle over its pixel count.
     const double window =
-        cornerSolidAngle(view.u1, view.v1, view.d) - cornerSolidAngle(view.u0, view.v1, view.d) -
-        cornerSolidAngle(view.u1, view.v0, view.d) + cornerSolidAngle(view.u0, view.v0, view.d);
+        gpu::windowSolidAngle(glm::vec4(view.u0, view.v0, view.u1, view.v1), float(view.d));
     return double(query_count_) * window / (double(n) * n);
   }
   // Eq. (3) without the receiver's cosine: a sample at (u, v) of the plane at distance d stands

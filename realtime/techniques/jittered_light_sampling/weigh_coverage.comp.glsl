@@ -18,12 +18,6 @@ uniform vec3 u_emission;       // the light's radiance
 
 shared vec3 partial[kWeighGroupSize];
 
-// Solid angle of the rectangle [0, a] × [0, b] in a plane at distance h, seen from the foot's
-// normal through its corner; odd in a and b, so corners combine with signs.
-float cornerSolidAngle(float a, float b, float h) {
-  return atan(a * b / (h * sqrt(h * h + a * a + b * b)));
-}
-
 void main() {
   const int layer = int(gl_WorkGroupID.x);
   const int point = u_first_point + layer;
@@ -36,12 +30,7 @@ void main() {
   if (lit) {
     const vec2 cell = (view.window.zw - view.window.xy) / float(u_size);
     const float stratum = cell.x * cell.y / float(max(u_samples, 1));
-    float window_solid_angle = 0.0;
-    if (u_equal_weights) {
-      vec4 w = view.window;
-      window_solid_angle = cornerSolidAngle(w.z, w.w, view.d) - cornerSolidAngle(w.x, w.w, view.d) -
-                           cornerSolidAngle(w.z, w.y, view.d) + cornerSolidAngle(w.x, w.y, view.d);
-    }
+    const float window_solid_angle = u_equal_weights ? windowSolidAngle(view.window, view.d) : 0.0;
     const vec3 diffuse = materialDiffuse(s.material), specular = materialSpecular(s.material);
     const float exponent = materialExponent(s.material);
     const bool phong = materialIsPhong(s.material);
