@@ -12,6 +12,7 @@
 #include "scene/mesh_builder.h"
 #include "support/form_factor.h"
 #include "support/gl_test_context.h"
+#include "support/technique_frame.h"
 
 #include <gtest/gtest.h>
 
@@ -139,18 +140,6 @@ TEST_F(HemisphericalGather, APatchsIrradianceIsItsFormFactorTimesPi) {
   }
 }
 
-TechniqueRunResult renderTechnique(const scene::Scene& scene, const std::string& technique,
-                                   const std::vector<std::string>& set, int size) {
-  const TechniqueInfo& info = findTechnique(technique);
-  const ParameterValues values = parseParameters(info.parameters, set, technique);
-  TechniqueRunSettings settings;
-  settings.width = settings.height = size;
-  settings.warmup_frames = 0;
-  settings.frames = 1;
-  settings.context.debug = true;
-  return runTechnique(scene, info, values, settings);
-}
-
 // On the Cornell box against the reference restricted to two bounces, each projection's image (the
 // voxel slices' too: 64 slabs of 64² per axis, the box's near geometry drawn) is less than half as
 // far (relMSE) as `direct`'s, which leaves the bounce out, and its path class is LE + LDE + LDDE.
@@ -158,18 +147,14 @@ TechniqueRunResult renderTechnique(const scene::Scene& scene, const std::string&
 TEST(HemisphericalGatherTechnique, OneGatheredBounceHalvesTheErrorOfDirectLightAlone) {
   const scene::Scene scene = scene::loadScene("cornell", {});
   const int size = 48;
-  ref::RenderSettings settings;
-  settings.width = settings.height = size;
-  settings.spp = 256;
-  settings.path_class = {0, 2};
-  const ref::RenderResult reference = ref::renderReference(scene, settings);
+  const ref::RenderResult reference = test::renderClassReference(scene, size, 256, {0, 2});
   const double direct =
-      metrics::computeRelMse(reference.mean, renderTechnique(scene, "direct", {}, size).image)
+      metrics::computeRelMse(reference.mean, test::renderOneFrame(scene, "direct", {}, size).image)
           .value;
   for (const char* projection :
        {"projection=hemispherical", "projection=perspective", "projection=voxel_slices"}) {
     const TechniqueRunResult r =
-        renderTechnique(scene, "hemispherical_gather", {projection, "gather_spacing=4"}, size);
+        test::renderOneFrame(scene, "hemispherical_gather", {projection, "gather_spacing=4"}, size);
     EXPECT_EQ(r.path_class, (scene::PathClass{0, 2}));
     const double gathered = metrics::computeRelMse(reference.mean, r.image).value;
     std::printf("%s: relMSE %.4f, direct alone %.4f\n", projection, gathered, direct);
@@ -189,7 +174,8 @@ TEST(HemisphericalGatherTechnique, TheFurnaceGathersItsSecondBounce) {
        {std::pair{"projection=hemispherical", 1.0}, std::pair{"projection=voxel_slices", 1.0},
         std::pair{"projection=perspective", 4 * sin80 * std::atan(sin80) / kPi}}) {
     const image::Image image =
-        renderTechnique(scene, "hemispherical_gather", {projection, "tessellation=1"}, 32).image;
+        test::renderOneFrame(scene, "hemispherical_gather", {projection, "tessellation=1"}, 32)
+            .image;
     double sum = 0;
     for (float v : image.data()) sum += v;
     const double mean = sum / double(image.data().size());
@@ -201,7 +187,7 @@ TEST(HemisphericalGatherTechnique, TheFurnaceGathersItsSecondBounce) {
 TEST(HemisphericalGatherTechnique, VoxelSlicesTakeThePapersMemory) {
   const scene::Scene scene = scene::loadScene("cornell", {});
   const TechniqueRunResult r =
-      renderTechnique(scene, "hemispherical_gather", {"projection=voxel_slices"}, 16);
+      test::renderOneFrame(scene, "hemispherical_gather", {"projection=voxel_slices"}, 16);
   bool found = false;
   for (const TechniqueStatistic& s : r.statistics)
     if (s.name == "voxel_slices_mb") {

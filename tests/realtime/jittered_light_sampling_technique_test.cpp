@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "support/render_statistics.h"
+#include "support/technique_frame.h"
 
 #include <gtest/gtest.h>
 
@@ -16,30 +17,6 @@
 
 namespace gib::rt {
 namespace {
-
-TechniqueRunSettings smallRun(int size) {
-  TechniqueRunSettings settings;
-  settings.width = settings.height = size;
-  settings.warmup_frames = 0;
-  settings.frames = 1;
-  settings.context.debug = true;  // any GL error fails the run
-  return settings;
-}
-
-TechniqueRunResult render(const scene::Scene& scene, const std::string& technique,
-                          const std::vector<std::string>& set, int size) {
-  const TechniqueInfo& info = findTechnique(technique);
-  const ParameterValues values = parseParameters(info.parameters, set, technique);
-  return runTechnique(scene, info, values, smallRun(size));
-}
-
-ref::RenderResult directReference(const scene::Scene& scene, int size, std::uint32_t spp) {
-  ref::RenderSettings settings;
-  settings.width = settings.height = size;
-  settings.spp = spp;
-  settings.path_class = {0, 1};
-  return ref::renderReference(scene, settings);
-}
 
 // A 4 × 4 Lambertian floor (albedo 0.5) seen from above, under a 1 × 0.6 light at height 1.5
 // facing down, off centre and tilted about x (the window is then not square to the image).
@@ -75,23 +52,26 @@ scene::Scene lightOverFloor() {
 TEST(JitteredLightSamplingTechnique, AnUnoccludedAreaLightOverAPlaneMatchesTheReference) {
   const scene::Scene scene = lightOverFloor();
   const int size = 40;
-  const ref::RenderResult reference = directReference(scene, size, 64);
+  const ref::RenderResult reference = test::renderClassReference(scene, size, 64, {0, 1});
   const test::ImageMean truth = test::imageMean(reference);
   const double se = truth.standard_error, m_ref = truth.mean;
   for (const char* scheme : {"scheme=regular", "scheme=jittered"}) {
-    const TechniqueRunResult r = render(scene, "jittered_light_sampling", {scheme}, size);
+    const TechniqueRunResult r =
+        test::renderOneFrame(scene, "jittered_light_sampling", {scheme}, size);
     EXPECT_EQ(r.path_class, (scene::PathClass{0, 1}));
     EXPECT_NEAR(test::imageMean(r.image), m_ref, 4 * se + 0.005 * m_ref) << scheme;
     EXPECT_LT(metrics::computeMape(reference.mean, r.image).value, 0.03) << scheme;
     EXPECT_EQ(image::countNonFinite(r.image), 0u);
   }
   const double regular = std::abs(
-      test::imageMean(render(scene, "jittered_light_sampling", {"scheme=regular"}, size).image) -
-      m_ref);
-  const double query = std::abs(
       test::imageMean(
-          render(scene, "jittered_light_sampling", {"scheme=occlusion_query"}, size).image) -
+          test::renderOneFrame(scene, "jittered_light_sampling", {"scheme=regular"}, size).image) -
       m_ref);
+  const double query =
+      std::abs(test::imageMean(test::renderOneFrame(scene, "jittered_light_sampling",
+                                                    {"scheme=occlusion_query"}, size)
+                                   .image) -
+               m_ref);
   EXPECT_LT(query, 0.05 * m_ref);
   EXPECT_GT(query, regular);
 }
@@ -147,9 +127,9 @@ double relMseLessReferenceNoise(const ref::RenderResult& reference, const image:
 TEST(JitteredLightSamplingTechnique, CornellPenumbraeBeatSixteenShadowMappedSamples) {
   const scene::Scene scene = scene::loadScene("cornell", {});
   const int size = 32, zoom = 4;
-  const ref::RenderResult reference = directReference(scene, size, 1024);
+  const ref::RenderResult reference = test::renderClassReference(scene, size, 1024, {0, 1});
   auto error = [&](const std::string& technique, const std::vector<std::string>& set) {
-    const image::Image fine = render(scene, technique, set, size * zoom).image;
+    const image::Image fine = test::renderOneFrame(scene, technique, set, size * zoom).image;
     return relMseLessReferenceNoise(reference, blockAverage(fine, zoom));
   };
   const double direct = error("direct", {});
@@ -166,7 +146,7 @@ TEST(JitteredLightSamplingTechnique, CornellPenumbraeBeatSixteenShadowMappedSamp
 // its occluders) and one weighing dispatch, whatever the number of points in the batch.
 TEST(JitteredLightSamplingTechnique, GpuCommandsPerFrameAreThreePerBatch) {
   const scene::Scene scene = scene::loadScene("cornell", {});
-  const TechniqueRunResult r = render(scene, "jittered_light_sampling", {}, 24);
+  const TechniqueRunResult r = test::renderOneFrame(scene, "jittered_light_sampling", {}, 24);
   const PassRecord& frame = r.profile.passes.front();
   ASSERT_EQ(frame.gpu_commands.size(), 1u);
   EXPECT_EQ(frame.gpu_commands[0], 2 + 3);  // 576 points: one batch

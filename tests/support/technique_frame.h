@@ -1,0 +1,21 @@
+// Renders as the technique tests do: one frame of a technique with the given `--set`
+// assignments (no warm-up, GL debug output on so that any GL error fails the run), and the
+// reference of a path class to compare it with (seed 0: a fixed render).
+#pragma once
+
+#include "realtime/technique_runner.h"
+#include "reference/progressive_renderer.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gib::test {
+
+rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::string& technique,
+                                      const std::vector<std::string>& set, int size);
+
+ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
+                                       scene::PathClass path_class);
+
+}  // namespace gib::test
