@@ -7,6 +7,7 @@
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
+#include "support/technique_frame.h"
 
 #include <gtest/gtest.h>
 
@@ -14,25 +15,6 @@
 
 namespace gib::rt {
 namespace {
-
-// A 4 × 4 Lambertian floor (albedo 0.5) seen from above; lights are added by each test.
-scene::Scene floorScene() {
-  scene::Scene s;
-  s.name = "floor";
-  s.camera.position = {0.0f, 3.0f, 0.0f};
-  s.camera.look_at = {0.0f, 0.0f, 0.0f};
-  s.camera.up = {0.0f, 0.0f, -1.0f};
-  s.camera.vertical_fov_deg = 50.0f;
-  scene::Material floor;
-  floor.name = "floor";
-  floor.diffuse = scene::Rgb(0.5f);
-  s.materials.push_back(floor);
-  scene::Mesh mesh;
-  mesh.name = "floor";
-  scene::appendQuad(mesh, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
-  s.meshes.push_back(mesh);
-  return s;
-}
 
 TechniqueRunSettings smallRun(int width, int height) {
   TechniqueRunSettings settings;
@@ -96,14 +78,14 @@ void expectMatchesReference(const scene::Scene& scene, const std::vector<std::st
 }
 
 TEST(DirectTechnique, DirectionalLightOnAPlaneMatchesTheReference) {
-  scene::Scene scene = floorScene();
+  scene::Scene scene = test::floorScene();
   scene.directional_lights.push_back({glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f)), {2, 1, 0.5f}});
   for (const char* shadow : {"shadow=hard", "shadow=pcf", "shadow=vsm"})
     expectMatchesReference(scene, {shadow}, 0.03);
 }
 
 TEST(DirectTechnique, SpotLightOnAPlaneMatchesTheReference) {
-  scene::Scene scene = floorScene();
+  scene::Scene scene = test::floorScene();
   scene::SpotLight spot;
   spot.position = {0.5f, 1.5f, 0.0f};
   spot.direction = {0.0f, -1.0f, 0.0f};
@@ -116,7 +98,7 @@ TEST(DirectTechnique, SpotLightOnAPlaneMatchesTheReference) {
 }
 
 TEST(DirectTechnique, SkyOnAPlaneMatchesTheReferenceWithManyDirections) {
-  scene::Scene scene = floorScene();
+  scene::Scene scene = test::floorScene();
   scene.sky_radiance = scene::Rgb(1.0f, 0.8f, 0.6f);
   expectMatchesReference(scene, {"light_samples=256", "shadow_map_size=64"}, 0.03);
 }

@@ -18,30 +18,22 @@
 namespace gib::rt {
 namespace {
 
-// A 4 × 4 Lambertian floor (albedo 0.5) seen from above, under a 1 × 0.6 light at height 1.5
-// facing down, off centre and tilted about x (the window is then not square to the image).
+// The test floor (support/technique_frame.h) under a 1 × 0.6 light at height 1.5 facing down,
+// off centre and tilted about x (the window is then not square to the image).
 scene::Scene lightOverFloor() {
-  scene::Scene s;
+  scene::Scene s = test::floorScene();
   s.name = "light_over_floor";
-  s.camera.position = {0.0f, 3.0f, 0.0f};
-  s.camera.look_at = {0.0f, 0.0f, 0.0f};
-  s.camera.up = {0.0f, 0.0f, -1.0f};
-  s.camera.vertical_fov_deg = 50.0f;
-  scene::Material floor, light;
-  floor.name = "floor";
-  floor.diffuse = scene::Rgb(0.5f);
+  scene::Material light;
   light.name = "light";
   light.emission = scene::Rgb(4.0f, 3.0f, 2.0f);
-  s.materials = {floor, light};
-  scene::Mesh floor_mesh, light_mesh;
-  floor_mesh.name = "floor";
-  scene::appendQuad(floor_mesh, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
+  s.materials.push_back(light);
+  scene::Mesh light_mesh;
   light_mesh.name = "light";
   light_mesh.material = 1;
   // Corners in an order whose normal faces down (−y, tilted).
   scene::appendQuad(light_mesh, {0.2f, 1.5f, -0.3f}, {1.2f, 1.5f, -0.3f}, {1.2f, 1.4f, 0.3f},
                     {0.2f, 1.4f, 0.3f});
-  s.meshes = {floor_mesh, light_mesh};
+  s.meshes.push_back(light_mesh);
   return s;
 }
 

@@ -1,6 +1,26 @@
 #include "support/technique_frame.h"
 
+#include "scene/mesh_builder.h"
+
 namespace gib::test {
+
+scene::Scene floorScene() {
+  scene::Scene s;
+  s.name = "floor";
+  s.camera.position = {0.0f, 3.0f, 0.0f};
+  s.camera.look_at = {0.0f, 0.0f, 0.0f};
+  s.camera.up = {0.0f, 0.0f, -1.0f};
+  s.camera.vertical_fov_deg = 50.0f;
+  scene::Material floor;
+  floor.name = "floor";
+  floor.diffuse = scene::Rgb(0.5f);
+  s.materials.push_back(floor);
+  scene::Mesh mesh;
+  mesh.name = "floor";
+  scene::appendQuad(mesh, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
+  s.meshes.push_back(mesh);
+  return s;
+}
 
 rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::string& technique,
                                       const std::vector<std::string>& set, int size) {

@@ -12,6 +12,10 @@
 
 namespace gib::test {
 
+// A 4 × 4 Lambertian floor (albedo 0.5) at y = 0 seen from straight above; lights are the
+// caller's to add.
+scene::Scene floorScene();
+
 rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::string& technique,
                                       const std::vector<std::string>& set, int size);
 
