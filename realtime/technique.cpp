@@ -4,6 +4,8 @@
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
+#include "realtime/techniques/irradiance_cache/irradiance_cache_technique.h"
+#include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_technique.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_technique.h"
 #include "realtime/techniques/light_path_map/light_path_map_technique.h"
@@ -19,7 +21,9 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        irradianceVolumeTechniqueInfo(),
                                                        lightPathMapTechniqueInfo(),
                                                        jitteredLightSamplingTechniqueInfo(),
-                                                       hemisphericalGatherTechniqueInfo()};
+                                                       hemisphericalGatherTechniqueInfo(),
+                                                       irradianceCacheTechniqueInfo(),
+                                                       irradianceCacheSplattingTechniqueInfo()};
   return catalogue;
 }
 

@@ -67,6 +67,10 @@ class Technique {
   // Renders one frame of the current state into frame.target.
   virtual void render(Frame& frame) = 0;
 
+  // A technique that computes on the CPU (the irradiance cache baseline) is timed by the
+  // profiler's CPU clock on any renderer: GPU timestamps would miss its work.
+  virtual bool timedOnCpu() const { return false; }
+
   // Iterative techniques (radiosity, light propagation) refine a state: step() runs one
   // iteration, iterations() counts those run, so the harness can draw error against iterations.
   virtual bool iterative() const { return false; }

@@ -108,7 +108,7 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
     result.prepare_ms = gl::finishedMilliseconds(
         [&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
     result.statistics = technique->statistics();
-    const bool precise = settings.precise.value_or(result.gl.software);
+    const bool precise = technique->timedOnCpu() || settings.precise.value_or(result.gl.software);
     RenderTarget target(settings.width, settings.height);
     if (technique->iterative()) iterate(*technique, settings, precise, target, result);
     gl::PassProfiler profiler(precise);

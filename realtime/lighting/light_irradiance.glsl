@@ -6,18 +6,10 @@
 // False outside a spot light's cone (no light at all).
 bool lightSampleIrradiance(int k, vec3 p, out vec3 wi, out vec3 irradiance) {
 #ifdef POINT_LIGHT
-  vec4 position = u_light_samples[k].position, axis = u_light_samples[k].axis;
-  vec4 intensity = u_light_samples[k].intensity;
-  vec3 to_light = position.xyz - p;
-  float distance_squared = dot(to_light, to_light);
-  wi = to_light * inversesqrt(distance_squared);
-  float cos_axis = dot(-wi, axis.xyz);
-  if (cos_axis < axis.w) return false;
-  float falloff = intensity.w == 0.0 ? 1.0 : pow(max(cos_axis, 0.0), intensity.w);
-  // position.w: 0 for a light that is a point; a virtual light that stands for a patch (light
-  // path maps) gives the patch's area over π, which keeps its irradiance on a receiver beside it
-  // finite (the on-axis irradiance of a disk of that area).
-  irradiance = intensity.rgb * (falloff / (distance_squared + position.w));
+  wi = normalize(u_light_samples[k].position.xyz - p);
+  vec4 lit = pointSampleIrradiance(u_light_samples[k], p);
+  irradiance = lit.rgb;
+  if (lit.w == 0.0) return false;
 #else
   wi = -u_light_samples[k].axis.xyz;
   irradiance = u_light_samples[k].intensity.rgb;

@@ -5,7 +5,15 @@
 #include "realtime/gl/host_device_shared.h"
 
 #ifdef __cplusplus
+#include <glm/common.hpp>
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+
 namespace gib::rt::gpu {
+using glm::dot;
+using glm::inversesqrt;
+using glm::max;
+using glm::pow;
 #endif
 
 // Samples per batch at most (the uniform block's array; 112 bytes each, within the 16 KiB every
@@ -18,6 +26,22 @@ struct GpuLightSample {
   vec4 intensity;        // rgb intensity (irradiance for directional); w falloff exponent
   mat4 view_projection;  // directional: world to the orthographic map's clip space
 };
+
+// What point sample `s` delivers at p, on a plane facing it: rgb the irradiance, w 1 inside a
+// spot's cone and 0 outside (no light at all). The shading passes (light_irradiance.glsl) and the
+// CPU irradiance cache's shadow rays both light with it.
+GIB_SHARED_FUNCTION vec4 pointSampleIrradiance(GpuLightSample s, vec3 p) {
+  vec3 to_light = vec3(s.position) - p;
+  float distance_squared = dot(to_light, to_light);
+  vec3 wi = to_light * inversesqrt(distance_squared);
+  float cos_axis = dot(-wi, vec3(s.axis));
+  if (cos_axis < s.axis.w) return vec4(0.0f);
+  float falloff = s.intensity.w == 0.0f ? 1.0f : pow(max(cos_axis, 0.0f), s.intensity.w);
+  // position.w: 0 for a light that is a point; a virtual light that stands for a patch (light
+  // path maps) gives the patch's area over π, which keeps its irradiance on a receiver beside it
+  // finite (the on-axis irradiance of a disk of that area).
+  return vec4(vec3(s.intensity) * (falloff / (distance_squared + s.position.w)), 1.0f);
+}
 
 // One layer the shadow pass draws the scene into, per instance of its one draw (layered
 // rendering): a cube face of a point sample, or a directional sample's map.

@@ -9,6 +9,11 @@
 
 namespace gib::rt {
 
+gpu::GpuLightSample toGpuLightSample(const LightSample& s, const glm::mat4& view_projection) {
+  return {glm::vec4(s.position, s.distance_squared_offset), glm::vec4(s.axis, s.cos_cone),
+          glm::vec4(s.intensity.x, s.intensity.y, s.intensity.z, s.exponent), view_projection};
+}
+
 glm::vec2 hammersley(std::uint32_t i, std::uint32_t n) {
   // Base-2 radical inverse: the bits of i mirrored about the binary point.
   std::uint32_t bits = i;

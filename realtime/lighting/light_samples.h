@@ -5,6 +5,7 @@
 #pragma once
 
 #include "realtime/gpu_scene/gpu_scene.h"
+#include "realtime/lighting/light_sample_shared.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -28,6 +29,11 @@ struct LightSample {
   // for a patch. The shading passes read samples as gpu::GpuLightSample (ShadowMaps uploads them).
   float distance_squared_offset = 0.0f;
 };
+
+// The sample as the shading passes read it (and pointSampleIrradiance takes it); a directional
+// sample's shadow map's `view_projection` rides along.
+gpu::GpuLightSample toGpuLightSample(const LightSample& sample,
+                                     const glm::mat4& view_projection = glm::mat4(1.0f));
 
 // Spot and directional lights one sample each; `area_samples` points over all emissive triangles
 // (chosen in proportion to their power, stratified by a Hammersley set, each lifted off its

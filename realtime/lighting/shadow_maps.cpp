@@ -167,9 +167,7 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
   for (const LightSample& s : batch) {
     const glm::mat4 view_projection =
         kind == LightSampleKind::kPoint ? glm::mat4(1.0f) : flatViewProjection(s);
-    records.push_back(
-        {glm::vec4(s.position, s.distance_squared_offset), glm::vec4(s.axis, s.cos_cone),
-         glm::vec4(s.intensity.x, s.intensity.y, s.intensity.z, s.exponent), view_projection});
+    records.push_back(toGpuLightSample(s, view_projection));
   }
   samples_.update(0, records.size() * sizeof(gpu::GpuLightSample), records.data());
   samples_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding);

@@ -1,5 +1,6 @@
 #include "support/technique_frame.h"
 
+#include "reference/embree_scene.h"
 #include "scene/mesh_builder.h"
 
 namespace gib::test {
@@ -31,6 +32,7 @@ rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::stri
   settings.warmup_frames = 0;
   settings.frames = 1;
   settings.context.debug = true;
+  settings.services.ray_caster = ref::embreeRayCasterFactory();  // for techniques that trace rays
   return rt::runTechnique(scene, info, values, settings);
 }
 

@@ -1,6 +1,6 @@
 // Renders as the technique tests do: one frame of a technique with the given `--set`
-// assignments (no warm-up, GL debug output on so that any GL error fails the run), and the
-// reference of a path class to compare it with (seed 0: a fixed render).
+// assignments (no warm-up, GL debug output on so that any GL error fails the run, the Embree ray
+// caster lent), and the reference of a path class to compare it with (seed 0: a fixed render).
 #pragma once
 
 #include "realtime/technique_runner.h"

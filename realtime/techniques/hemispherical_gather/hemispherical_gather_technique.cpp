@@ -1,15 +1,12 @@
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
 
-#include "realtime/atlas/atlas_lighting.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
-#include "realtime/lighting/light_samples.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace gib::rt {
@@ -58,39 +55,15 @@ void HemisphericalGatherTechnique::prepare(const GpuScene& scene, int width, int
   lighting_.prepare(scene);
   const float extent = std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-6f);
 
-  // The directly lit scene as a radiance atlas: ρ/π times the shadow-mapped direct irradiance of
-  // every texel, from the same light samples as the camera's direct light.
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<atlas::AtlasTriangle> triangles = atlas::atlasTriangles(scene.scene());
-  const atlas::AtlasLayout layout = atlas::layoutAtlas(triangles, atlas_resolution_);
-  atlas_.emplace(atlas::bakeAtlasTexels(triangles, layout), triangles, scene.scene());
-  mesh_.emplace(triangles, layout, tessellation_);
-  radiance_atlas_ = gl::Texture::make2D(GL_RGBA32F, atlas_resolution_, atlas_resolution_);
-  radiance_atlas_.setFilter(GL_LINEAR, GL_LINEAR);
-  const float zero[4] = {0, 0, 0, 0};
-  glClearTexImage(radiance_atlas_.id(), 0, GL_RGBA, GL_FLOAT, zero);
-  gl::Framebuffer atlas_target;
-  atlas_target.attachColor(0, radiance_atlas_);
-  atlas_target.setDrawBuffers(1);
-  atlas_target.checkComplete();
-  const std::vector<LightSample> samples = makeLightSamples(
-      scene.scene(), scene.emitters(), light_samples_, light_samples_, 1e-3f * extent);
-  if (!samples.empty()) {
-    ShadowSettings settings;
-    settings.filter = ShadowFilter::kPcf;
-    settings.size = 512;
-    atlas::AtlasLighting(settings, scene, samples.size())
-        .add(scene, samples, *atlas_, atlas_target);
-  }
-  glFinish();
-  prepare_atlas_ms_ =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // The directly lit scene as a radiance atlas, from the same light samples as the camera's.
+  atlas_ = atlas::makeDirectRadianceAtlas(scene, atlas_resolution_, light_samples_);
+  mesh_.emplace(atlas_.triangles, atlas_.layout, tessellation_);
 
   // The slices need no tessellation (orthographic views keep edges straight): built from the
   // scene's own triangles, 4^levels fewer than the views draw.
   if (projection_ == gpu::kProjectionVoxelSlices)
-    voxels_.emplace(scene, atlas::AtlasMesh(triangles, layout, 0), radiance_atlas_, slices_,
-                    slice_size_);
+    voxels_.emplace(scene, atlas::AtlasMesh(atlas_.triangles, atlas_.layout, 0), atlas_.radiance,
+                    slices_, slice_size_);
   gather_.emplace(projection_, view_size_, spacing_, width, height, extent);
   interpolate_ =
       gl::FullScreenPass("realtime/techniques/hemispherical_gather/gather_interpolate.frag.glsl");
@@ -104,7 +77,7 @@ void HemisphericalGatherTechnique::render(Frame& frame) {
   gbuffer_->render(scene, &frame.profiler);
   lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
   lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
-  gather_->gather(scene, *mesh_, radiance_atlas_, *gbuffer_, frame.profiler, glm::vec3(0.0f),
+  gather_->gather(scene, *mesh_, atlas_.radiance, *gbuffer_, frame.profiler, glm::vec3(0.0f),
                   voxels_ ? &*voxels_ : nullptr);
 
   auto pass = frame.profiler.pass(kInterpolatePass);
@@ -125,7 +98,7 @@ std::vector<AuxiliaryImage> HemisphericalGatherTechnique::auxiliaryImages() {
            "irradiance at the gather points (one pixel per point, the grid over the image)",
            gl::readTexture(gather_->irradiance(), 3)},
           {"radiance-atlas", "the directly lit scene the gather views see (ρ/π · direct E)",
-           gl::readTexture(radiance_atlas_, 3)}};
+           gl::readTexture(atlas_.radiance, 3)}};
 }
 
 std::vector<TechniqueStatistic> HemisphericalGatherTechnique::statistics() const {
@@ -134,7 +107,7 @@ std::vector<TechniqueStatistic> HemisphericalGatherTechnique::statistics() const
           {"view_size", double(view_size_)},
           {"points_per_batch", double(gather_ ? gather_->pointsPerBatch() : 0)},
           {"view_triangles", double(mesh_ ? mesh_->vertexCount() / 3 : 0)},
-          {"prepare_atlas_ms", prepare_atlas_ms_},
+          {"prepare_atlas_ms", atlas_.milliseconds},
           {"prepare_voxels_ms", voxels_ ? voxels_->buildMilliseconds() : 0.0},
           {"voxel_slices_mb", voxels_ ? double(voxels_->bytes()) / 1e6 : 0.0}};
 }

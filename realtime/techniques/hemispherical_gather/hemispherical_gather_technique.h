@@ -7,9 +7,8 @@
 // README.md beside this file.
 #pragma once
 
-#include "realtime/atlas/atlas_layout.h"
 #include "realtime/atlas/atlas_mesh.h"
-#include "realtime/atlas/atlas_textures.h"
+#include "realtime/atlas/direct_radiance_atlas.h"
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/fullscreen_pass.h"
 #include "realtime/lighting/direct_lighting.h"
@@ -43,10 +42,8 @@ class HemisphericalGatherTechnique final : public Technique {
   DirectLighting lighting_;
   const GpuScene* scene_ = nullptr;
   std::optional<GBuffer> gbuffer_;
-  std::optional<atlas::AtlasTextures> atlas_;
+  atlas::DirectRadianceAtlas atlas_;
   std::optional<atlas::AtlasMesh> mesh_;
-  gl::Texture radiance_atlas_;
-  double prepare_atlas_ms_ = 0;
   std::optional<VoxelSlices> voxels_;
   std::optional<HemisphereGather> gather_;
   gl::FullScreenPass interpolate_;

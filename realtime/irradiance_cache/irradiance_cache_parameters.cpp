@@ -1,0 +1,28 @@
+#include "realtime/irradiance_cache/irradiance_cache_parameters.h"
+
+namespace gib::rt {
+
+ParameterTable irradianceCacheParameters() {
+  return {
+      numericParameter("accuracy", ParameterType::kNumber, "0.2", 0.01, 2, "",
+                       "Ward's a: a record contributes where its weight exceeds 1/a; smaller "
+                       "means more records and less interpolation error"),
+      numericParameter("coarsest_spacing", ParameterType::kInteger, "32", 1, 1024, "pixels",
+                       "the record traversal's first grid; it halves each round down to 1"),
+      numericParameter("min_zone_pixels", ParameterType::kNumber, "2", 0.5, 64, "pixels",
+                       "smallest zone of influence a·R, in pixel footprints at the record"),
+      numericParameter("max_zone_pixels", ParameterType::kNumber, "64", 1, 4096, "pixels",
+                       "largest zone of influence a·R, in pixel footprints at the record"),
+  };
+}
+
+RecordPlacementSettings recordPlacementSettings(const ParameterValues& p) {
+  RecordPlacementSettings settings;
+  settings.accuracy = float(p.number("accuracy"));
+  settings.coarsest_spacing = p.integer("coarsest_spacing");
+  settings.min_zone_pixels = float(p.number("min_zone_pixels"));
+  settings.max_zone_pixels = float(p.number("max_zone_pixels"));
+  return settings;
+}
+
+}  // namespace gib::rt
