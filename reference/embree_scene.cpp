@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace gib::ref {
 
@@ -123,6 +124,66 @@ bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& direction, 
   return ray.tfar < 0.0f;
 }
 
+namespace {
+
+RTCRay embreeRay(const scene::Ray& r) {
+  RTCRay ray;
+  ray.org_x = r.origin.x;
+  ray.org_y = r.origin.y;
+  ray.org_z = r.origin.z;
+  ray.dir_x = r.direction.x;
+  ray.dir_y = r.direction.y;
+  ray.dir_z = r.direction.z;
+  ray.tnear = r.t_near;
+  ray.tfar = r.t_far;
+  ray.mask = 0xffffffffu;
+  ray.time = 0.0f;
+  ray.flags = 0;
+  return ray;
+}
+
+// The streams' arrays, reused by each thread from call to call.
+thread_local std::vector<RTCRayHit> ray_hits;
+thread_local std::vector<RTCRay> shadow_rays;
+
+}  // namespace
+
+void EmbreeScene::intersect(std::span<const scene::Ray> rays, std::span<Hit> hits,
+                            bool coherent) const {
+  if (hits.size() != rays.size()) throw std::invalid_argument("one hit per ray");
+  ray_hits.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    ray_hits[i].ray = embreeRay(rays[i]);
+    ray_hits[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    ray_hits[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags =
+      coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  rtcIntersect1M(impl_->scene, &context, ray_hits.data(), unsigned(rays.size()), sizeof(RTCRayHit));
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    hits[i] = Hit{};
+    if (ray_hits[i].hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+    hits[i].t = ray_hits[i].ray.tfar;
+    hits[i].mesh = ray_hits[i].hit.geomID;
+    hits[i].triangle = ray_hits[i].hit.primID;
+  }
+}
+
+void EmbreeScene::occluded(std::span<const scene::Ray> rays,
+                           std::span<std::uint8_t> blocked) const {
+  if (blocked.size() != rays.size()) throw std::invalid_argument("one answer per ray");
+  shadow_rays.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) shadow_rays[i] = embreeRay(rays[i]);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  rtcOccluded1M(impl_->scene, &context, shadow_rays.data(), unsigned(rays.size()), sizeof(RTCRay));
+  // Embree marks an occluded ray by setting tfar to −inf.
+  for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = shadow_rays[i].tfar < 0.0f ? 1 : 0;
+}
+
 std::string embreeVersion() {
   return fmt::format("{}.{}.{}", RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
 }
@@ -135,6 +196,13 @@ class EmbreeRayCaster final : public scene::RayCaster {
   scene::RayHit intersect(const glm::vec3& origin, const glm::vec3& direction,
                           float t_near) const override {
     return embree_.intersect(origin, direction, t_near);
+  }
+  void intersect(std::span<const scene::Ray> rays, std::span<scene::RayHit> hits,
+                 bool coherent) const override {
+    embree_.intersect(rays, hits, coherent);
+  }
+  void occluded(std::span<const scene::Ray> rays, std::span<std::uint8_t> blocked) const override {
+    embree_.occluded(rays, blocked);
   }
   float rayEpsilon() const override { return embree_.rayEpsilon(); }
 

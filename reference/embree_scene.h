@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace gib::ref {
@@ -32,6 +33,10 @@ class EmbreeScene {
   // Whether anything lies along the segment (t_near, t_far).
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,
                 float t_far) const;
+  // The same for a batch, through Embree's ray streams (rtcIntersect1M, rtcOccluded1M), which
+  // trace rays in packets; `coherent` tells Embree the rays share an origin or a direction.
+  void intersect(std::span<const scene::Ray> rays, std::span<Hit> hits, bool coherent) const;
+  void occluded(std::span<const scene::Ray> rays, std::span<std::uint8_t> blocked) const;
 
   // An offset for spawned rays that keeps them off the surface they leave: relative to the
   // scene's extent, since float error in a hit point grows with its coordinates.

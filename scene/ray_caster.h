@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <span>
 
 namespace gib::scene {
 
@@ -23,12 +24,27 @@ struct RayHit {
   bool valid() const { return t < std::numeric_limits<float>::infinity(); }
 };
 
+// One ray of a batch: origin + t·direction for t in (t_near, t_far).
+struct Ray {
+  glm::vec3 origin{0.0f};
+  glm::vec3 direction{0.0f, 0.0f, 1.0f};
+  float t_near = 0.0f;
+  float t_far = std::numeric_limits<float>::infinity();
+};
+
 class RayCaster {
  public:
   virtual ~RayCaster() = default;
   // Closest hit along origin + t·direction for t in (t_near, ∞); `direction` need not be unit.
   virtual RayHit intersect(const glm::vec3& origin, const glm::vec3& direction,
                            float t_near) const = 0;
+  // The closest hit of every ray of a batch (hits.size() == rays.size()). `coherent`: the rays
+  // share an origin or a direction (a hemisphere's rays), which an implementation may trace
+  // together. This one traces them one at a time.
+  virtual void intersect(std::span<const Ray> rays, std::span<RayHit> hits,
+                         bool coherent = false) const;
+  // Whether anything lies on each ray's segment (blocked.size() == rays.size()).
+  virtual void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
   // An offset for spawned rays that keeps them off the surface they leave.
   virtual float rayEpsilon() const = 0;
 };

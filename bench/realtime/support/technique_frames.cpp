@@ -72,7 +72,7 @@ void benchmarkTechniqueFrames(benchmark::State& state, const std::string& techni
   technique->provide(services);
   technique->prepare(gpu_scene, w, size);
   RenderTarget target(w, size);
-  gl::PassProfiler profiler(context.identity().software);
+  gl::PassProfiler profiler(context.identity().software || technique->timedOnCpu());
   // An endless run: an animating technique keeps animating (frames_left never reaches 0).
   Frame frame{target, profiler, 1 << 30, 1 << 30};
   for (int i = 0; i < 2; ++i) {  // warm-up: shader compilation on first use, caches
@@ -88,6 +88,8 @@ void benchmarkTechniqueFrames(benchmark::State& state, const std::string& techni
                              profiler.endFrame();
                            }));
   reportPasses(state, profiler, context);
+  // The technique's own counts and timings (records, texels, preparation phases).
+  for (const TechniqueStatistic& s : technique->statistics()) state.counters[s.name] = s.value;
 }
 
 }  // namespace gib::rt

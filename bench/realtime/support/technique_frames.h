@@ -1,7 +1,8 @@
 // The frame benchmark every real-time technique shares: one frame per benchmark iteration on the
 // machine's GL device, finished with glFinish and timed by wall clock, after warm-up frames; the
 // pass profiler's medians come out as counters "<pass>_ms" in its reported clock (CPU around
-// glFinish on llvmpipe, GPU timestamps on a GPU), and the label names the renderer.
+// glFinish on llvmpipe or for a technique timed on the CPU, GPU timestamps on a GPU), the
+// technique's statistics are counters of their own names, and the label names the renderer.
 #pragma once
 
 #include "realtime/technique.h"

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace gib::rt {
 
@@ -41,19 +42,30 @@ class RecordRandom {
   std::uint64_t state_;
 };
 
-// The triangle a ray met: its unit geometric normal and its material.
-struct SurfaceHit {
-  glm::vec3 normal;
-  const scene::Material* material;
-};
-SurfaceHit surfaceHit(const scene::Scene& scene, const scene::RayHit& hit) {
-  const scene::Mesh& mesh = scene.meshes[hit.mesh];
-  const glm::uvec3 t = mesh.triangles[hit.triangle];
-  const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
-  return {glm::normalize(glm::cross(b - a, c - a)), &scene.materials[mesh.material]};
+}  // namespace
+
+// The triangle a ray met: its unit geometric normal and its material, from a table made once
+// (computing the normal from the mesh's vertices at every hit cost a tenth of the frame).
+IrradianceCacheTechnique::SurfaceHit IrradianceCacheTechnique::surfaceHit(
+    const scene::RayHit& hit) const {
+  const glm::vec4& t = triangles_[mesh_offsets_[hit.mesh] + hit.triangle];
+  return {glm::vec3(t), &scene_->scene().materials[std::size_t(t.w)]};
 }
 
-}  // namespace
+void IrradianceCacheTechnique::tabulateTriangles() {
+  const scene::Scene& sc = scene_->scene();
+  mesh_offsets_.clear();
+  triangles_.clear();
+  for (const scene::Mesh& mesh : sc.meshes) {
+    mesh_offsets_.push_back(std::uint32_t(triangles_.size()));
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+      const glm::vec3 normal = glm::cross(b - a, c - a);
+      const float length = glm::length(normal);
+      triangles_.emplace_back(length > 0 ? normal / length : glm::vec3(0.0f), float(mesh.material));
+    }
+  }
+}
 
 IrradianceCacheTechnique::IrradianceCacheTechnique(const ParameterValues& p)
     : placement_(recordPlacementSettings(p)),
@@ -72,6 +84,7 @@ void IrradianceCacheTechnique::prepare(const GpuScene& scene, int width, int hei
   const auto start = Clock::now();
   caster_ = services_.ray_caster(scene.scene());
   caster_ms_ = millisecondsSince(start);
+  tabulateTriangles();
   // The light samples of the GPU techniques (DirectLighting), lit here with shadow rays.
   const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
   samples_.clear();
@@ -87,9 +100,11 @@ void IrradianceCacheTechnique::prepare(const GpuScene& scene, int width, int hei
   buildRecords();  // the first frame's cache; frames rebuild it only without reuse
 }
 
-glm::vec3 IrradianceCacheTechnique::sampleIrradiance(const gpu::GpuLightSample& sample,
-                                                     bool directional, const glm::vec3& p,
-                                                     const glm::vec3& n) const {
+glm::vec3 IrradianceCacheTechnique::unshadowedIrradiance(std::size_t s, const glm::vec3& p,
+                                                         const glm::vec3& n,
+                                                         scene::Ray& shadow) const {
+  const gpu::GpuLightSample& sample = samples_[s];
+  const bool directional = directional_[s] != 0;
   glm::vec3 wi, irradiance;
   if (directional) {
     wi = -glm::vec3(sample.axis);
@@ -103,15 +118,11 @@ glm::vec3 IrradianceCacheTechnique::sampleIrradiance(const gpu::GpuLightSample& 
   const float cos_theta = glm::dot(n, wi);
   if (cos_theta <= 0) return glm::vec3(0.0f);
   const float eps = caster_->rayEpsilon();
-  const glm::vec3 origin = p + eps * n;
-  if (directional) {
-    if (caster_->intersect(origin, wi, 0.0f).valid()) return glm::vec3(0.0f);
-  } else {
-    const glm::vec3 to_light = glm::vec3(sample.position) - origin;
-    const float distance = glm::length(to_light);
-    if (caster_->intersect(origin, to_light / distance, 0.0f).t < distance - eps)
-      return glm::vec3(0.0f);
-  }
+  shadow.origin = p + eps * n;
+  shadow.direction = wi;
+  shadow.t_near = 0.0f;
+  shadow.t_far = directional ? std::numeric_limits<float>::infinity()
+                             : glm::length(glm::vec3(sample.position) - shadow.origin) - eps;
   return cos_theta * irradiance;
 }
 
@@ -128,6 +139,9 @@ void IrradianceCacheTechnique::traceSurfaces() {
   const scene::CameraFrame camera = scene::makeCameraFrame(sc.camera, width, height);
   const glm::vec3 sky(sc.sky_radiance.r, sc.sky_radiance.g, sc.sky_radiance.b);
   parallelFor(std::size_t(height), threads_, 1, [&](std::size_t begin, std::size_t end) {
+    std::vector<scene::Ray> rays;
+    std::vector<glm::vec3> lit;
+    std::vector<std::uint8_t> blocked;
     for (std::size_t y = begin; y < end; ++y)
       for (int x = 0; x < width; ++x) {
         const std::size_t i = surfaces_.index(x, int(y));
@@ -139,7 +153,7 @@ void IrradianceCacheTechnique::traceSurfaces() {
           own_light_[i] = sky;
           continue;
         }
-        const SurfaceHit surface = surfaceHit(sc, hit);
+        const SurfaceHit surface = surfaceHit(hit);
         const scene::Material& m = *surface.material;
         const glm::vec3 wo = -d;
         const bool front = glm::dot(surface.normal, wo) > 0;
@@ -149,16 +163,23 @@ void IrradianceCacheTechnique::traceSurfaces() {
         const glm::vec3 specular(m.specular.r, m.specular.g, m.specular.b);
         glm::vec3 light =
             front ? glm::vec3(m.emission.r, m.emission.g, m.emission.b) : glm::vec3(0.0f);
-        for (std::size_t s = 0; s < samples_.size(); ++s) {
-          const glm::vec3 e = sampleIrradiance(samples_[s], directional_[s] != 0, p, n);
+        // Every light sample's shadow ray of this pixel, traced as one batch.
+        rays.clear();
+        lit.clear();
+        for (std::size_t k = 0; k < samples_.size(); ++k) {
+          scene::Ray shadow;
+          const glm::vec3 e = unshadowedIrradiance(k, p, n, shadow);
           if (e == glm::vec3(0.0f)) continue;
-          const glm::vec3 wi = directional_[s]
-                                   ? -glm::vec3(samples_[s].axis)
-                                   : glm::normalize(glm::vec3(samples_[s].position) - p);
-          light += gpu::evaluateBrdf(diffuse, specular, m.exponent,
-                                     m.type == scene::MaterialType::kPhong, n, wo, wi) *
-                   e;
+          rays.push_back(shadow);
+          lit.push_back(gpu::evaluateBrdf(diffuse, specular, m.exponent,
+                                          m.type == scene::MaterialType::kPhong, n, wo,
+                                          shadow.direction) *
+                        e);
         }
+        blocked.resize(rays.size());
+        caster_->occluded(rays, blocked);
+        for (std::size_t k = 0; k < rays.size(); ++k)
+          if (!blocked[k]) light += lit[k];
         surfaces_.position[i] = p;
         surfaces_.normal[i] = n;
         surfaces_.valid[i] = 1;
@@ -172,34 +193,59 @@ void IrradianceCacheTechnique::traceSurfaces() {
 gpu::IrradianceRecord IrradianceCacheTechnique::computeRecord(const glm::vec3& p,
                                                               const glm::vec3& n,
                                                               std::uint64_t stream) const {
-  const scene::Scene& sc = scene_->scene();
   const WardStrata strata = wardStrata(record_rays_);
+  const std::size_t count = std::size_t(strata.count());
   const glm::vec3 t = gpu::basisTangent(n), b = gpu::basisBitangent(n);
   const glm::vec3 origin = p + caster_->rayEpsilon() * n;
   RecordRandom random(splitMixFinalise(seed_ ^ splitMix64(stream)));
-  std::vector<HemisphereSample> samples(std::size_t(strata.count()));
+  // The strata's rays leave one point: one coherent batch (Embree's ray streams).
+  thread_local std::vector<scene::Ray> rays, shadows;
+  thread_local std::vector<scene::RayHit> hits;
+  thread_local std::vector<float> u_light;
+  thread_local std::vector<std::uint8_t> blocked;
+  thread_local std::vector<std::size_t> shadowed_sample;
+  thread_local std::vector<glm::vec3> shadowed_radiance;
+  rays.resize(count);
+  hits.resize(count);
+  u_light.resize(count);
   for (int j = 0; j < strata.theta; ++j)
     for (int k = 0; k < strata.phi; ++k) {
+      const std::size_t i = std::size_t(j) * std::size_t(strata.phi) + std::size_t(k);
       const glm::vec2 u(random.next(), random.next());
-      const float u_light = random.next();
-      const glm::vec3 w = wardDirection(t, b, n, j, k, strata, u);
-      const scene::RayHit hit = caster_->intersect(origin, w, 0.0f);
-      if (!hit.valid()) continue;  // the sky: direct light, not this bounce
-      HemisphereSample& s = samples[std::size_t(j) * std::size_t(strata.phi) + std::size_t(k)];
-      s.distance = hit.t;
-      if (samples_.empty()) continue;
-      // The once-reflected light: ρ/π times the direct irradiance at the hit, from one light
-      // sample picked at random and weighted by their count (the GPU's atlas sums all of them).
-      const SurfaceHit surface = surfaceHit(sc, hit);
-      const glm::vec3 hit_normal =
-          glm::dot(surface.normal, w) > 0 ? -surface.normal : surface.normal;
-      const std::size_t pick =
-          std::min(samples_.size() - 1, std::size_t(u_light * float(samples_.size())));
-      const glm::vec3 e =
-          sampleIrradiance(samples_[pick], directional_[pick] != 0, origin + hit.t * w, hit_normal);
-      const scene::Rgb& rho = surface.material->diffuse;
-      s.radiance = float(samples_.size()) * gpu::kInvPi * glm::vec3(rho.r, rho.g, rho.b) * e;
+      u_light[i] = random.next();
+      rays[i] = {origin, wardDirection(t, b, n, j, k, strata, u)};
     }
+  caster_->intersect(rays, hits, true);
+
+  // The once-reflected light at each hit: ρ/π times the direct irradiance there, from one light
+  // sample picked at random and weighted by their count (the GPU's atlas sums all of them); the
+  // sky a ray escapes to is direct light, not this bounce.
+  std::vector<HemisphereSample> samples(count);
+  shadows.clear();
+  shadowed_sample.clear();
+  shadowed_radiance.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!hits[i].valid()) continue;
+    samples[i].distance = hits[i].t;
+    if (samples_.empty()) continue;
+    const glm::vec3 w = rays[i].direction;
+    const SurfaceHit surface = surfaceHit(hits[i]);
+    const glm::vec3 hit_normal = glm::dot(surface.normal, w) > 0 ? -surface.normal : surface.normal;
+    const std::size_t pick =
+        std::min(samples_.size() - 1, std::size_t(u_light[i] * float(samples_.size())));
+    scene::Ray shadow;
+    const glm::vec3 e = unshadowedIrradiance(pick, origin + hits[i].t * w, hit_normal, shadow);
+    if (e == glm::vec3(0.0f)) continue;
+    const scene::Rgb& rho = surface.material->diffuse;
+    shadows.push_back(shadow);
+    shadowed_sample.push_back(i);
+    shadowed_radiance.push_back(float(samples_.size()) * gpu::kInvPi *
+                                glm::vec3(rho.r, rho.g, rho.b) * e);
+  }
+  blocked.resize(shadows.size());
+  caster_->occluded(shadows, blocked);
+  for (std::size_t k = 0; k < shadows.size(); ++k)
+    if (!blocked[k]) samples[shadowed_sample[k]].radiance = shadowed_radiance[k];
   return wardRecord(p, n, strata, samples);
 }
 

@@ -40,10 +40,17 @@ class IrradianceCacheTechnique final : public Technique {
   void buildRecords();
   gpu::IrradianceRecord computeRecord(const glm::vec3& p, const glm::vec3& n,
                                       std::uint64_t stream) const;
-  // Direct irradiance × BRDF (or ρ/π) at a surface point from light sample `sample`.
-  glm::vec3 sampleIrradiance(const gpu::GpuLightSample& sample, bool directional,
-                             const glm::vec3& p, const glm::vec3& n) const;
+  // What light sample `s` delivers at p (unit normal n) as E·cos θ if nothing is in the way, and
+  // the shadow ray that decides it; zero, and no ray, where it cannot light p.
+  glm::vec3 unshadowedIrradiance(std::size_t s, const glm::vec3& p, const glm::vec3& n,
+                                 scene::Ray& shadow) const;
   void interpolate();
+  struct SurfaceHit {
+    glm::vec3 normal;
+    const scene::Material* material;
+  };
+  SurfaceHit surfaceHit(const scene::RayHit& hit) const;
+  void tabulateTriangles();
 
   RecordPlacementSettings placement_;
   int record_rays_;
@@ -54,6 +61,8 @@ class IrradianceCacheTechnique final : public Technique {
   TechniqueServices services_;
   const GpuScene* scene_ = nullptr;
   std::unique_ptr<scene::RayCaster> caster_;
+  std::vector<std::uint32_t> mesh_offsets_;  // the first triangle of each mesh in triangles_
+  std::vector<glm::vec4> triangles_;         // unit geometric normal, w the material index
   std::vector<gpu::GpuLightSample> samples_;
   std::vector<std::uint8_t> directional_;
   SurfaceImage surfaces_;
