@@ -1,5 +1,6 @@
 #include "realtime/atlas/direct_radiance_atlas.h"
 
+#include "common/elapsed.h"
 #include "realtime/atlas/atlas_lighting.h"
 #include "realtime/lighting/light_samples.h"
 
@@ -36,8 +37,7 @@ DirectRadianceAtlas makeDirectRadianceAtlas(const GpuScene& scene, int resolutio
     AtlasLighting(settings, scene, samples.size()).add(scene, samples, *atlas.textures, target);
   }
   glFinish();
-  atlas.milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  atlas.milliseconds = millisecondsSince(start);
   return atlas;
 }
 

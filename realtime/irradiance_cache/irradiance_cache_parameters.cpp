@@ -1,5 +1,9 @@
 #include "realtime/irradiance_cache/irradiance_cache_parameters.h"
 
+#include "common/input_error.h"
+
+#include <fmt/format.h>
+
 namespace gib::rt {
 
 ParameterTable irradianceCacheParameters() {
@@ -13,6 +17,9 @@ ParameterTable irradianceCacheParameters() {
                        "smallest zone of influence a·R, in pixel footprints at the record"),
       numericParameter("max_zone_pixels", ParameterType::kNumber, "64", 1, 4096, "pixels",
                        "largest zone of influence a·R, in pixel footprints at the record"),
+      choiceParameter("reuse_records", "true", {"true", "false"},
+                      "keep the records across frames (a static scene and camera), or rebuild "
+                      "them every frame"),
   };
 }
 
@@ -22,6 +29,11 @@ RecordPlacementSettings recordPlacementSettings(const ParameterValues& p) {
   settings.coarsest_spacing = p.integer("coarsest_spacing");
   settings.min_zone_pixels = float(p.number("min_zone_pixels"));
   settings.max_zone_pixels = float(p.number("max_zone_pixels"));
+  if (settings.min_zone_pixels > settings.max_zone_pixels)
+    throw InputError(fmt::format(
+        "irradiance cache: min_zone_pixels={} exceeds max_zone_pixels={}; give a minimum no "
+        "larger than the maximum",
+        p.text("min_zone_pixels"), p.text("max_zone_pixels")));
   return settings;
 }
 

@@ -80,4 +80,13 @@ image::Image zoneIllustration(const SurfaceImage& surfaces, const CameraTransfor
   return picture;
 }
 
+AuxiliaryImage zonesAuxiliaryImage(const SurfaceImage& surfaces, const CameraTransform& camera,
+                                   std::span<const gpu::IrradianceRecord> records, float accuracy) {
+  return {
+      "zones",
+      "the records' zones of influence: each pixel in the colour of the record that weighs most "
+      "there, records' pixels white",
+      zoneIllustration(surfaces, camera, records, accuracy)};
+}
+
 }  // namespace gib::rt

@@ -5,6 +5,7 @@
 
 #include "image/image.h"
 #include "realtime/irradiance_cache/record_placement.h"
+#include "realtime/technique.h"
 
 #include <span>
 
@@ -13,5 +14,9 @@ namespace gib::rt {
 // Pixel (0,0) at the top left, like every image the harness writes.
 image::Image zoneIllustration(const SurfaceImage& surfaces, const CameraTransform& camera,
                               std::span<const gpu::IrradianceRecord> records, float accuracy);
+
+// The illustration as both techniques' auxiliary image "zones".
+AuxiliaryImage zonesAuxiliaryImage(const SurfaceImage& surfaces, const CameraTransform& camera,
+                                   std::span<const gpu::IrradianceRecord> records, float accuracy);
 
 }  // namespace gib::rt

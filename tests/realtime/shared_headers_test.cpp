@@ -4,11 +4,14 @@
 #include "common/luminance_shared.h"
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/shader_library.h"
+#include "realtime/gpu_scene/brdf_shared.h"
 #include "realtime/gpu_scene/gpu_scene_shared.h"
+#include "realtime/irradiance_cache/irradiance_cache_shared.h"
 #include "realtime/lighting/light_sample_shared.h"
 #include "realtime/lighting/lighting_shared.h"
 #include "realtime/sh/spherical_harmonics_shared.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
+#include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
 #include "realtime/techniques/light_path_map/light_path_map_shared.h"
@@ -17,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -40,11 +44,14 @@ TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
       "common/luminance_shared.h",
       "realtime/gl/binding_plan_shared.h",
       "realtime/gl/host_device_shared.h",
+      "realtime/gpu_scene/brdf_shared.h",
       "realtime/gpu_scene/gpu_scene_shared.h",
+      "realtime/irradiance_cache/irradiance_cache_shared.h",
       "realtime/lighting/light_sample_shared.h",
       "realtime/lighting/lighting_shared.h",
       "realtime/sh/spherical_harmonics_shared.h",
       "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h",
+      "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h",
       "realtime/techniques/irradiance_volume/irradiance_volume_shared.h",
       "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h",
       "realtime/techniques/light_path_map/light_path_map_shared.h",
@@ -81,7 +88,7 @@ std::vector<int> evaluateOnGpu(const std::vector<std::string>& expressions) {
 
 TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
   using namespace gpu;
-  const std::vector<std::pair<std::string, int>> cases = {
+  std::vector<std::pair<std::string, int>> cases = {
       {"kGBufferNormalUnit", kGBufferNormalUnit},
       {"kShadowMapUnit", kShadowMapUnit},
       {"kAtlasEmissionUnit", kAtlasEmissionUnit},
@@ -128,6 +135,49 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"int(coverageSampleOffset(7u, 1234u, 999u, 3, 4).y * 16777216.0)",
        int(coverageSampleOffset(7u, 1234u, 999u, 3, 4).y * 16777216.0f)},
   };
+  // The irradiance cache's record, weight, extrapolation and zone (the CPU octree and the GPU
+  // splatting must interpolate alike), the light samples' irradiance and the BRDF (the CPU cache
+  // lights with them what the shading passes light).
+  IrradianceRecord record{};
+  record.position_radius = vec4(1, 2, 3, 0.5f);
+  record.normal = vec4(0, 1, 0, 0);
+  record.irradiance = vec4(1, 2, 3, 0);
+  record.rotation[1] = vec4(0.5f, 0, 0.25f, 0);
+  record.translation[0] = vec4(1, -1, 0.5f, 0);
+  const std::string glsl_record =
+      "IrradianceRecord(vec4(1, 2, 3, 0.5), vec4(0, 1, 0, 0), vec4(1, 2, 3, 0), "
+      "vec4[3](vec4(0), vec4(0.5, 0, 0.25, 0), vec4(0)), vec4[3](vec4(1, -1, 0.5, 0), vec4(0), "
+      "vec4(0)))";
+  const vec3 p(1.2f, 2.05f, 3.1f), n = glm::normalize(vec3(0.3f, 1.0f, -0.2f));
+  const std::string glsl_pn = "vec3(1.2, 2.05, 3.1), normalize(vec3(0.3, 1.0, -0.2))";
+  auto fixed = [](float v) { return int(std::floor(v * 1e4f + 0.5f)); };
+  auto fixedGlsl = [](const std::string& e) { return "int(floor((" + e + ") * 1e4 + 0.5))"; };
+  const GpuLightSample spot{vec4(0, 2, 0, 0), vec4(0, -1, 0, 0.5f), vec4(3, 3, 3, 2), mat4(1.0f)};
+  const std::string glsl_spot =
+      "GpuLightSample(vec4(0, 2, 0, 0), vec4(0, -1, 0, 0.5), vec4(3, 3, 3, 2), mat4(1.0))";
+  const vec3 wo = glm::normalize(vec3(0.2f, 0, 1)), wi = glm::normalize(vec3(-0.1f, 0.1f, 1));
+  cases.insert(
+      cases.end(),
+      {{"kRecordsBinding", kRecordsBinding},
+       {"kSplatSumsUnit", kSplatSumsUnit},
+       {"kRecordSamplingHemicube", kRecordSamplingHemicube},
+       {"kRecordSums", kRecordSums},
+       {"kRecordSumGroupSize", kRecordSumGroupSize},
+       {fixedGlsl("recordWeight(" + glsl_record + ", " + glsl_pn + ")"),
+        fixed(recordWeight(record, p, n))},
+       {fixedGlsl("recordIrradiance(" + glsl_record + ", " + glsl_pn + ").x"),
+        fixed(recordIrradiance(record, p, n).x)},
+       {fixedGlsl("recordIrradiance(" + glsl_record + ", " + glsl_pn + ").y"),
+        fixed(recordIrradiance(record, p, n).y)},
+       {fixedGlsl("zoneScreenRect(mat4(1.0), mat4(1.0), vec3(0.1, 0.2, -3.0), 0.5).z"),
+        fixed(zoneScreenRect(mat4(1.0f), mat4(1.0f), vec3(0.1f, 0.2f, -3.0f), 0.5f).z)},
+       {fixedGlsl("basisBitangent(normalize(vec3(0.3, -0.5, 0.8))).x"),
+        fixed(basisBitangent(glm::normalize(vec3(0.3f, -0.5f, 0.8f))).x)},
+       {fixedGlsl("pointSampleIrradiance(" + glsl_spot + ", vec3(0.5, 0, 0.2)).x"),
+        fixed(pointSampleIrradiance(spot, vec3(0.5f, 0, 0.2f)).x)},
+       {fixedGlsl("evaluateBrdf(vec3(0.5), vec3(0.3), 20.0, true, vec3(0, 0, 1), "
+                  "normalize(vec3(0.2, 0, 1)), normalize(vec3(-0.1, 0.1, 1))).x"),
+        fixed(evaluateBrdf(vec3(0.5f), vec3(0.3f), 20.0f, true, vec3(0, 0, 1), wo, wi).x)}});
   std::vector<std::string> expressions;
   for (const auto& [expression, value] : cases) expressions.push_back(expression);
   const std::vector<int> gpu_values = evaluateOnGpu(expressions);
@@ -216,6 +266,23 @@ TEST_F(SharedHeaders, LightSampleBlocksHaveTheCppLayoutInTheDriver) {
             sizeof(GpuLightSample) + offsetof(GpuLightSample, view_projection));
   EXPECT_EQ(offset("faces[1].view_projection"), sizeof(ShadowFace));
   EXPECT_EQ(offset("faces[1].layer_slot"), sizeof(ShadowFace) + offsetof(ShadowFace, layer_slot));
+}
+
+// The irradiance cache's records (std430 storage): the gradients' arrays where C++ puts them.
+TEST_F(SharedHeaders, IrradianceRecordHasTheCppLayoutInTheDriver) {
+  const gl::Program program = layoutProgram(
+      "#include \"realtime/techniques/irradiance_cache_splatting/record_face.glsl\"\n"
+      "layout(local_size_x = 1) in;\n"
+      "void main() { records[0].translation[2] = records[1].rotation[1] + records[2].normal; }\n");
+  auto property = [&](const char* name, GLenum what) {
+    return resourceProperty(program, GL_BUFFER_VARIABLE, name, what);
+  };
+  using gpu::IrradianceRecord;
+  EXPECT_EQ(property("records[0].normal", GL_OFFSET), offsetof(IrradianceRecord, normal));
+  EXPECT_EQ(property("records[0].rotation[0]", GL_OFFSET), offsetof(IrradianceRecord, rotation));
+  EXPECT_EQ(property("records[0].translation[0]", GL_OFFSET),
+            offsetof(IrradianceRecord, translation));
+  EXPECT_EQ(property("records[0].normal", GL_TOP_LEVEL_ARRAY_STRIDE), sizeof(IrradianceRecord));
 }
 
 // The light path map's selected panes (its own binding, so a program of its own).

@@ -1,5 +1,6 @@
 #include "realtime/techniques/irradiance_cache/irradiance_cache_technique.h"
 
+#include "common/elapsed.h"
 #include "common/input_error.h"
 #include "common/parallel_for.h"
 #include "common/splitmix.h"
@@ -28,9 +29,6 @@ constexpr std::string_view kInterpolationPass = "interpolation";
 constexpr std::string_view kUploadPass = "upload";
 
 using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // Uniform numbers in [0, 1) of one record's own stream (SplitMix64 of a counter).
 class RecordRandom {
@@ -314,10 +312,7 @@ std::vector<AuxiliaryImage> IrradianceCacheTechnique::auxiliaryImages() {
       float* out = irradiance.pixel(x, surfaces_.height - 1 - y);
       for (int c = 0; c < 3; ++c) out[c] = e[c];
     }
-  return {{"zones",
-           "the records' zones of influence: each pixel in the colour of the record that weighs "
-           "most there, records' pixels white",
-           zoneIllustration(surfaces_, scene_->camera(), records_, placement_.accuracy)},
+  return {zonesAuxiliaryImage(surfaces_, scene_->camera(), records_, placement_.accuracy),
           {"irradiance", "the interpolated irradiance E (before ρ/π)", std::move(irradiance)}};
 }
 
@@ -348,9 +343,6 @@ TechniqueInfo irradianceCacheTechniqueInfo() {
       numericParameter("light_samples", ParameterType::kInteger, "16", 1, 4096, "",
                        "points over the area lights and directions over the sky (the GPU "
                        "techniques' samples), lit with shadow rays"),
-      choiceParameter("reuse_records", "true", {"true", "false"},
-                      "keep the records across frames (a static scene and camera), or rebuild "
-                      "them every frame"),
       numericParameter("threads", ParameterType::kInteger, "0", 0, 1024, "",
                        "worker threads; 0: one per hardware thread (results do not depend on it)"),
       numericParameter("seed", ParameterType::kInteger, "1", 0, 2147483647, "",

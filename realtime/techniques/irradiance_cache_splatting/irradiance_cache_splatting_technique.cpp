@@ -1,5 +1,6 @@
 #include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_technique.h"
 
+#include "common/elapsed.h"
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
@@ -23,9 +24,6 @@ constexpr std::string_view kSplatPass = "splatting";
 constexpr std::string_view kNormalizePass = "normalisation";
 
 using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The notes' first step on the CPU: the G-buffer's positions and normals read back, normals
 // turned to the viewer as the splatting's fragments turn them (shaded_surface.glsl).
@@ -205,10 +203,7 @@ std::vector<AuxiliaryImage> IrradianceCacheSplattingTechnique::auxiliaryImages()
       float* e = irradiance.pixel(x, y);
       for (int c = 0; c < 3; ++c) e[c] = s[3] > 0 ? s[c] / s[3] : 0.0f;
     }
-  return {{"zones",
-           "the records' zones of influence: each pixel in the colour of the record that weighs "
-           "most there, records' pixels white",
-           zoneIllustration(surfaces_, scene_->camera(), records_, placement_.accuracy)},
+  return {zonesAuxiliaryImage(surfaces_, scene_->camera(), records_, placement_.accuracy),
           {"irradiance", "the splatted irradiance E = Σ w·E_k / Σ w (before ρ/π)",
            std::move(irradiance)}};
 }
@@ -246,9 +241,6 @@ TechniqueInfo irradianceCacheSplattingTechniqueInfo() {
                        "directions (notes 001)"),
       choiceParameter("border_compensation", "true", {"true", "false"},
                       "plane sampling: border pixels also stand for the directions beyond them"),
-      choiceParameter("reuse_records", "true", {"true", "false"},
-                      "keep the records across frames (a static scene and camera), or rebuild "
-                      "them every frame"),
       choiceParameter("atlas", "256", {"64", "128", "256", "512", "1024"},
                       "radiance atlas texels per side (the directly lit scene the views see)"),
   };

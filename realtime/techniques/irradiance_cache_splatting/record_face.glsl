@@ -3,6 +3,7 @@
 // lower halves below the horizon. A face's image spans [−h, h]² on the plane at unit distance
 // (h = tan of half its field of view); pixel (i, j) looks along x·right + y·up + forward.
 #include "realtime/irradiance_cache/irradiance_cache_shared.h"
+#include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h"
 
 struct RecordFace {
   vec3 forward, right, up;

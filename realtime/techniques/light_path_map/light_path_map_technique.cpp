@@ -1,5 +1,6 @@
 #include "realtime/techniques/light_path_map/light_path_map_technique.h"
 
+#include "common/elapsed.h"
 #include "common/input_error.h"
 #include "common/luminance_shared.h"
 #include "realtime/atlas/atlas_lighting.h"
@@ -60,11 +61,6 @@ double luminanceOf(const glm::vec3& c) {
   return kLuminanceRed * c.r + kLuminanceGreen * c.g + kLuminanceBlue * c.b;
 }
 
-double elapsedMilliseconds(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
-
 // Bytes of level 0 of `texture` as GL reports its size and component sizes.
 std::int64_t allocatedBytes(const gl::Texture& texture) {
   GLint bits = 0;
@@ -115,7 +111,7 @@ void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height
   // tracing on the CPU, the panes on the GPU.
   auto start = std::chrono::steady_clock::now();
   const std::unique_ptr<scene::RayCaster> caster = services_.ray_caster(scene.scene());
-  preprocessing_.ray_caster_ms = elapsedMilliseconds(start);
+  preprocessing_.ray_caster_ms = millisecondsSince(start);
 
   start = std::chrono::steady_clock::now();
   double total_area = 0;
@@ -127,7 +123,7 @@ void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height
   const lpm::LightWalks walks = lpm::traceLightWalks(
       *caster, scene.scene(), triangles_, entries_, cluster_of_entry_, settings_.paths_per_entry,
       total_area, settings_.seed, settings_.max_walk_vertices);
-  preprocessing_.light_tracing_ms = elapsedMilliseconds(start);
+  preprocessing_.light_tracing_ms = millisecondsSince(start);
   preprocessing_.path_vertices = walks.path_vertices;
   preprocessing_.virtual_lights = walks.lights.size();
   cluster_size_.assign(std::size_t(settings_.clusters), 0);
