@@ -11,6 +11,9 @@ ParameterTable irradianceCacheParameters() {
       numericParameter("accuracy", ParameterType::kNumber, "0.2", 0.01, 2, "",
                        "Ward's a: a record contributes where its weight exceeds 1/a; smaller "
                        "means more records and less interpolation error"),
+      choiceParameter("traversal", "rounds", {"rounds", "scanline"},
+                      "record placement: coarse-to-fine rounds of records computed together, or "
+                      "the notes' scan-order traversal, one record at a time"),
       numericParameter("coarsest_spacing", ParameterType::kInteger, "32", 1, 1024, "pixels",
                        "the record traversal's first grid; it halves each round down to 1"),
       numericParameter("min_zone_pixels", ParameterType::kNumber, "2", 0.5, 64, "pixels",
@@ -27,6 +30,7 @@ RecordPlacementSettings recordPlacementSettings(const ParameterValues& p) {
   RecordPlacementSettings settings;
   settings.accuracy = float(p.number("accuracy"));
   settings.coarsest_spacing = p.integer("coarsest_spacing");
+  settings.scanline = p.text("traversal") == "scanline";
   settings.min_zone_pixels = float(p.number("min_zone_pixels"));
   settings.max_zone_pixels = float(p.number("max_zone_pixels"));
   if (settings.min_zone_pixels > settings.max_zone_pixels)

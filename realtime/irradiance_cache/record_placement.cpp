@@ -33,6 +33,14 @@ RecordPlacement::RecordPlacement(const SurfaceImage& surfaces, const CameraTrans
 
 std::vector<glm::ivec2> RecordPlacement::nextRound() {
   const int width = surfaces_.width, height = surfaces_.height;
+  if (settings_.scanline) {
+    for (; cursor_ < weights_.size(); ++cursor_)
+      if (surfaces_.valid[cursor_] && weights_[cursor_] == 0) {
+        ++rounds_;
+        return {{int(cursor_ % std::size_t(width)), int(cursor_ / std::size_t(width))}};
+      }
+    return {};
+  }
   const int claim = std::max(0, int(std::ceil(settings_.min_zone_pixels)) - 1);
   for (;;) {
     const int s = spacing_;

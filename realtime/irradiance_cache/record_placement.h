@@ -9,7 +9,8 @@
 // grid, coarse to fine (spacing halves each round down to one pixel, then stays), that no record
 // covers become the round's records, except those within `min_zone_pixels` of one accepted in the
 // same round (its zone will cover them at least that far, or the next round takes them). Every
-// round covers its records' own pixels, so rounds end when every pixel is covered.
+// round covers its records' own pixels, so rounds end when every pixel is covered. The notes'
+// own scanline traversal (one record per round) is kept to measure what the rounds cost in records.
 #pragma once
 
 #include "realtime/gpu_scene/gpu_scene.h"
@@ -37,6 +38,9 @@ struct SurfaceImage {
 struct RecordPlacementSettings {
   float accuracy = 0.2f;      // Ward's a: a record contributes where w > 1/a
   int coarsest_spacing = 32;  // pixels between the first round's candidates
+  // The notes' own traversal instead: the pixels in scan order, one record at a time, each
+  // splatted before the next pixel is checked (a round of one record).
+  bool scanline = false;
   // A record's zone radius a·R is kept between these many pixel footprints at its distance: no
   // zone smaller than a few pixels in corners (R → 0), none larger than a part of the image.
   float min_zone_pixels = 2.0f;
@@ -66,6 +70,7 @@ class RecordPlacement {
   std::vector<float> weights_;
   int spacing_;
   int rounds_ = 0;
+  std::size_t cursor_ = 0;  // scanline: the next pixel to check
 };
 
 // The pixels (x0, y0, x1, y1 inclusive; x1 < x0 when none) whose centres lie in the zone rectangle

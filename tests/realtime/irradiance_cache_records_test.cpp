@@ -163,17 +163,28 @@ TEST(IrradianceCacheOctree, LookupEqualsTheSumOverAllRecords) {
   EXPECT_GT(covered, 500);
 }
 
-// The traversal leaves no pixel uncovered, covers each record's own pixel, and ends.
-TEST(IrradianceCachePlacement, RoundsCoverEveryPixel) {
+// The traversal leaves no pixel uncovered, covers each record's own pixel, and ends, in rounds
+// and in the notes' scan order (one record a round, in increasing pixel order).
+class IrradianceCachePlacement : public ::testing::TestWithParam<bool> {};
+
+TEST_P(IrradianceCachePlacement, EveryPixelEndsCovered) {
   const PlaneView v = planeView();
   RecordPlacementSettings settings;
   settings.accuracy = 0.2f;
+  settings.scanline = GetParam();
   RecordPlacement placement(v.surfaces, v.camera, settings);
+  std::size_t previous_pixel = 0;
   int records = 0;
   for (;;) {
     const std::vector<glm::ivec2> round = placement.nextRound();
     if (round.empty()) break;
     std::vector<gpu::IrradianceRecord> fresh;
+    if (settings.scanline) {
+      ASSERT_EQ(round.size(), 1u);
+      const std::size_t k = v.surfaces.index(round[0].x, round[0].y);
+      EXPECT_GE(k, previous_pixel);
+      previous_pixel = k;
+    }
     for (const glm::ivec2& pixel : round) {
       const std::size_t k = v.surfaces.index(pixel.x, pixel.y);
       ASSERT_TRUE(v.surfaces.valid[k]);
@@ -184,7 +195,7 @@ TEST(IrradianceCachePlacement, RoundsCoverEveryPixel) {
     for (const glm::ivec2& pixel : round)
       EXPECT_GT(placement.weights()[v.surfaces.index(pixel.x, pixel.y)], 1.0f / settings.accuracy);
     records += int(round.size());
-    ASSERT_LT(placement.rounds(), 100);
+    ASSERT_LT(placement.rounds(), settings.scanline ? 64 * 48 : 100);
   }
   for (std::size_t k = 0; k < v.surfaces.valid.size(); ++k) {
     if (!v.surfaces.valid[k]) continue;
@@ -193,6 +204,8 @@ TEST(IrradianceCachePlacement, RoundsCoverEveryPixel) {
   EXPECT_GT(records, 4);
   EXPECT_LT(records, 64 * 48 / 4);  // far fewer records than pixels
 }
+INSTANTIATE_TEST_SUITE_P(Traversals, IrradianceCachePlacement, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "Scanline" : "Rounds"; });
 
 // Ward & Heckbert's sampling of a radiance field given as a function of direction (and the
 // distance to what is seen), at the origin with normal +z.
