@@ -1,6 +1,7 @@
 #include "reference/progressive_renderer.h"
 
 #include "common/input_error.h"
+#include "common/parallel_for.h"
 #include "common/progress.h"
 #include "scene/camera.h"
 
@@ -13,7 +14,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 namespace gib::ref {
 
@@ -148,8 +148,7 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
     });
   };
 
-  const int threads = settings.threads > 0 ? settings.threads
-                                           : int(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = resolveThreadCount(settings.threads);
   tbb::task_arena arena(threads);
   arena.execute([&] {
     std::uint32_t done = 0;

@@ -40,18 +40,10 @@ scene::Scene floorScene(bool patch) {
   floor.name = "floor";
   scene::appendQuad(floor, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
   s.meshes = {floor};
-  if (patch) {
-    scene::Mesh square;
-    square.name = "patch";
-    scene::appendQuad(square, {-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f}, {0.5f, 1, 0.5f},
-                      {-0.5f, 1, 0.5f});
-    s.meshes.push_back(square);
-  }
-  return s;
+  return patch ? test::withUnitPatch(s) : s;
 }
 
-const std::vector<glm::dvec3> kPatch = {
-    {-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5}, {-0.5, 1, 0.5}};
+const std::vector<glm::dvec3>& kPatch = test::unitPatchCorners();
 
 struct Gathered {
   image::Image irradiance;  // the grid

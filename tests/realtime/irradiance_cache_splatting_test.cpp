@@ -10,7 +10,6 @@
 #include "realtime/render_target.h"
 #include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h"
 #include "scene/builtin_scenes.h"
-#include "scene/mesh_builder.h"
 #include "support/form_factor.h"
 #include "support/gl_test_context.h"
 #include "support/technique_frame.h"
@@ -27,18 +26,9 @@ constexpr double kPi = std::numbers::pi;
 
 // A 4 × 4 floor at y = 0 and, optionally, a square patch at height 1 facing down.
 scene::Scene floorWithPatch(bool patch) {
-  scene::Scene s = test::floorScene();
-  if (patch) {
-    scene::Mesh square;
-    square.name = "patch";
-    scene::appendQuad(square, {-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f}, {0.5f, 1, 0.5f},
-                      {-0.5f, 1, 0.5f});
-    s.meshes.push_back(square);
-  }
-  return s;
+  return patch ? test::withUnitPatch(test::floorScene()) : test::floorScene();
 }
-const std::vector<glm::dvec3> kPatch = {
-    {-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5}, {-0.5, 1, 0.5}};
+const std::vector<glm::dvec3>& kPatch = test::unitPatchCorners();
 
 // Records on the floor at `points` (normal +y), sampled with every surface of radiance 1 (the
 // floor lies below every record's horizon, so only the patch is seen) and `background` elsewhere.

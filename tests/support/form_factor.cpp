@@ -37,4 +37,19 @@ scene::Scene facingUnitSquares(const scene::Material& top, const scene::Material
   return s;
 }
 
+const std::vector<glm::dvec3>& unitPatchCorners() {
+  static const std::vector<glm::dvec3> corners = {
+      {-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5}, {-0.5, 1, 0.5}};
+  return corners;
+}
+
+scene::Scene withUnitPatch(scene::Scene scene) {
+  scene::Mesh square;
+  square.name = "patch";
+  const std::vector<glm::dvec3>& c = unitPatchCorners();
+  scene::appendQuad(square, glm::vec3(c[0]), glm::vec3(c[1]), glm::vec3(c[2]), glm::vec3(c[3]));
+  scene.meshes.push_back(square);
+  return scene;
+}
+
 }  // namespace gib::test

@@ -19,4 +19,9 @@ double pointToPolygonFormFactor(const glm::dvec3& x, const glm::dvec3& n,
 // facing +y, of material 1. A camera looks at them from the side.
 scene::Scene facingUnitSquares(const scene::Material& top, const scene::Material& bottom);
 
+// A unit square at height 1 centred over the origin, facing down (−y): its corners in order, and
+// `scene` with it added as a mesh of material 0 (a patch over the floor of the gather tests).
+const std::vector<glm::dvec3>& unitPatchCorners();
+scene::Scene withUnitPatch(scene::Scene scene);
+
 }  // namespace gib::test

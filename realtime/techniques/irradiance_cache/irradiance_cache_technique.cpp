@@ -7,7 +7,6 @@
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gpu_scene/brdf_shared.h"
 #include "realtime/irradiance_cache/irradiance_cache_parameters.h"
-#include "realtime/irradiance_cache/record_octree.h"
 #include "realtime/irradiance_cache/zone_illustration.h"
 #include "realtime/render_target.h"
 #include "realtime/techniques/irradiance_cache/ward_hemisphere.h"
@@ -265,18 +264,19 @@ void IrradianceCacheTechnique::buildRecords() {
     records_.insert(records_.end(), fresh.begin(), fresh.end());
   }
   rounds_ = placement.rounds();
+  // The store the lookups search: built with the cache, not at every frame that reuses it.
+  octree_.emplace(scene_->boundsMin(), scene_->boundsMax(), placement_.accuracy);
+  for (const gpu::IrradianceRecord& record : records_) octree_->insert(record);
   records_ms_ = millisecondsSince(start);
 }
 
 void IrradianceCacheTechnique::interpolate() {
   const auto start = Clock::now();
-  RecordOctree octree(scene_->boundsMin(), scene_->boundsMax(), placement_.accuracy);
-  for (const gpu::IrradianceRecord& record : records_) octree.insert(record);
   irradiance_.assign(surfaces_.valid.size(), glm::vec3(0.0f));
   parallelFor(irradiance_.size(), threads_, 4096, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       if (!surfaces_.valid[i]) continue;
-      const glm::vec4 sum = octree.lookup(surfaces_.position[i], surfaces_.normal[i]);
+      const glm::vec4 sum = octree_->lookup(surfaces_.position[i], surfaces_.normal[i]);
       if (sum.w > 0) irradiance_[i] = glm::vec3(sum) / sum.w;
     }
   });
@@ -351,10 +351,11 @@ TechniqueInfo irradianceCacheTechniqueInfo() {
   info.parameters.insert(info.parameters.end(), own.begin(), own.end());
   info.passes.add(passPath({kFramePass, kSurfacesPass}),
                   "CPU: primary rays and their direct light (shadow rays to the light samples)");
-  info.passes.add(passPath({kFramePass, kRecordsPass}),
-                  "CPU: the cache rebuilt (without reuse): traversal, stratified hemisphere rays");
+  info.passes.add(
+      passPath({kFramePass, kRecordsPass}),
+      "CPU: the cache rebuilt (without reuse): traversal, stratified hemisphere rays, octree");
   info.passes.add(passPath({kFramePass, kInterpolationPass}),
-                  "CPU: the octree built and looked up at every pixel");
+                  "CPU: the octree looked up at every pixel");
   info.passes.add(passPath({kFramePass, kUploadPass}), "the image copied into the frame");
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IrradianceCacheTechnique>(values);

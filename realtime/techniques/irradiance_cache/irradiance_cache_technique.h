@@ -8,11 +8,13 @@
 // clock times it. See README.md beside this file.
 #pragma once
 
+#include "realtime/irradiance_cache/record_octree.h"
 #include "realtime/irradiance_cache/record_placement.h"
 #include "realtime/lighting/light_samples.h"
 #include "realtime/technique.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace gib::rt {
@@ -68,6 +70,7 @@ class IrradianceCacheTechnique final : public Technique {
   SurfaceImage surfaces_;
   std::vector<glm::vec3> albedo_, own_light_, irradiance_;
   std::vector<gpu::IrradianceRecord> records_;
+  std::optional<RecordOctree> octree_;  // records_, for the lookups
   int rounds_ = 0;
   double caster_ms_ = 0, surfaces_ms_ = 0, records_ms_ = 0, interpolation_ms_ = 0;
   double rays_ = 0;  // record rays and their shadow rays in the last build

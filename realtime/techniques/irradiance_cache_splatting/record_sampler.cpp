@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace gib::rt {
@@ -29,7 +30,10 @@ RecordSampler::RecordSampler(const RecordSamplingSettings& settings, float exten
   faces_ = plane ? 1 : gpu::kMaxRecordFaces;
   half_width_ = plane ? std::tan(glm::radians(0.5f * settings.plane_fov_degrees)) : 1.0f;
   const int size = settings.size;
-  batch_ = std::max(1, gl::layersPerBatch(1 << 20, 20.0 * size * size, kBatchBudgetBytes) / faces_);
+  // A round's record count is not known here: as many layers as the budget and the driver allow.
+  const int most_layers = std::numeric_limits<int>::max();
+  batch_ =
+      std::max(1, gl::layersPerBatch(most_layers, 20.0 * size * size, kBatchBudgetBytes) / faces_);
   views_.emplace(GL_RGBA32F, size, batch_ * faces_);
 
   const std::string folder = "realtime/techniques/irradiance_cache_splatting/";
