@@ -37,15 +37,25 @@ void listSuites() {
   }
 }
 
+// The path class of the technique's defaults; for one whose iterations add bounces, the class
+// after none and after one. Constructing a technique does no GL work (that is prepare's), so the
+// list needs no context to say which paths it models.
+std::string defaultPathClass(const rt::TechniqueInfo& info) {
+  const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
+  const std::unique_ptr<rt::Technique> technique = info.create(defaults);
+  const scene::PathClass none = technique->pathClassAfter(0), one = technique->pathClassAfter(1);
+  if (!technique->iterative() || none == one) return scene::describePathClass(none);
+  return fmt::format("{} after 0 iterations, {} after 1 (one more bounce per iteration)",
+                     scene::describePathClass(none), scene::describePathClass(one));
+}
+
 // What the technique's README (realtime/techniques/<name>/README.md) shows between its
 // "generated" markers: the catalogue's own words, parameter table and declared passes.
 std::string techniqueMarkdown(const rt::TechniqueInfo& info) {
-  const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
   std::string out = fmt::format(
       "`{}`: {}.\n\nSource: {}. Path class with the defaults: {}.\n\n## Parameters "
       "(`--set key=value`)\n\n{}\n## Passes\n\n| pass | what it times |\n|---|---|\n",
-      info.name, info.description, info.source,
-      scene::describePathClass(info.create(defaults)->pathClass()),
+      info.name, info.description, info.source, defaultPathClass(info),
       parameterMarkdownTable(info.parameters));
   for (const rt::DeclaredPass& pass : info.passes.passes())
     out += fmt::format("| `{}` | {} |\n", pass.path, pass.description);
@@ -62,11 +72,7 @@ void listTechniques() {
   for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) {
     fmt::print("{:<{}} {}\n", info.name, width, info.description);
     fmt::print("{:<{}}   source: {}\n", "", width, info.source);
-    // Constructing a technique does no GL work (that is prepare's), so the list needs no
-    // context to say which paths the defaults model.
-    const ParameterValues defaults = parseParameters(info.parameters, {}, info.name);
-    fmt::print("{:<{}}   path class (defaults): {}\n", "", width,
-               scene::describePathClass(info.create(defaults)->pathClass()));
+    fmt::print("{:<{}}   path class (defaults): {}\n", "", width, defaultPathClass(info));
     for (const std::string& line : describeParameters(info.parameters))
       fmt::print("{:<{}}   --set {}\n", "", width, line);
     std::vector<std::string> passes;

@@ -4,11 +4,13 @@
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
+#include "realtime/techniques/illumination_network/illumination_network_technique.h"
 #include "realtime/techniques/irradiance_cache/irradiance_cache_technique.h"
 #include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_technique.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_technique.h"
 #include "realtime/techniques/light_path_map/light_path_map_technique.h"
+#include "realtime/techniques/spherical_billboards/spherical_billboards_technique.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
 
 #include <fmt/format.h>
@@ -23,7 +25,9 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        jitteredLightSamplingTechniqueInfo(),
                                                        hemisphericalGatherTechniqueInfo(),
                                                        irradianceCacheTechniqueInfo(),
-                                                       irradianceCacheSplattingTechniqueInfo()};
+                                                       irradianceCacheSplattingTechniqueInfo(),
+                                                       sphericalBillboardsTechniqueInfo(),
+                                                       illuminationNetworkTechniqueInfo()};
   return catalogue;
 }
 

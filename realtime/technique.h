@@ -77,9 +77,13 @@ class Technique {
   virtual void step(gl::PassProfiler& /*profiler*/) {}
   virtual int iterations() const { return 0; }
 
-  // The light paths this technique models with its current parameters (docs/architecture.md,
-  // "Path classes").
+  // The light paths this technique models with its current parameters and state
+  // (docs/architecture.md, "Path classes").
   virtual scene::PathClass pathClass() const = 0;
+  // The class it will model after `iterations` steps, asked before any is run so that the harness
+  // can pick the reference: an iteration that adds a scattering order (the illumination network)
+  // overrides it.
+  virtual scene::PathClass pathClassAfter(int /*iterations*/) const { return pathClass(); }
 
   // Images of the technique's internal state that a paper shows beside the camera image (a
   // radiance atlas, one bounce's contribution). Called once after the last measured frame with

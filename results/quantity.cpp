@@ -97,7 +97,11 @@ std::optional<double> singleQuantityValue(const JobResult& job, const std::strin
 }  // namespace
 
 std::optional<std::string> parameterText(const JobResult& job, std::string_view name) {
-  for (const auto& [key, value] : job.parameters)
+  // "scene.<name>": a scene parameter, as job ids write them ("scene.particles=512").
+  constexpr std::string_view kScene = "scene.";
+  const bool scene = name.starts_with(kScene);
+  if (scene) name.remove_prefix(kScene.size());
+  for (const auto& [key, value] : scene ? job.scene_parameters : job.parameters)
     if (key == name) return value;
   return std::nullopt;
 }

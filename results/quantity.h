@@ -7,7 +7,8 @@
 //   iteration, iteration/<pass>  median milliseconds per iteration of an iterative technique
 //   iterations                   the number of iterations run
 //   statistic:<name>             a count the technique reports (vertices, atlas_texels, …)
-//   parameter:<name>             a technique parameter (numeric for an axis, any for a series)
+//   parameter:<name>             a technique parameter (numeric for an axis, any for a series);
+//                                parameter:scene.<name> a scene parameter
 //   scene                        the job's scene (a series only: it has no number)
 //   a + b + …                    the sum of several (a paper's row that spans passes)
 //
@@ -39,7 +40,8 @@ std::optional<std::string> quantitySyntaxError(const std::string& quantity);
 // none (a metric, a statistic, a parameter).
 std::vector<std::string> quantityPasses(const std::string& quantity);
 
-// The job's parameter of that name, as its canonical text; nullopt when it has none.
+// The job's parameter of that name ("scene.<name>": its scene's), as its canonical text; nullopt
+// when it has none.
 std::optional<std::string> parameterText(const JobResult& job, std::string_view name);
 
 inline constexpr std::string_view kParameterPrefix = "parameter:";

@@ -1,7 +1,9 @@
 // The `cloud` scene: a procedural cumulus of medium particles in the spirit of the book's
 // Figs. 9.21/9.22 (Szirmay-Kalos et al., §9.6: "The cloud model consists of 1024 particles ...
 // The albedo is 0.9 and material parameter g is 0"), lit by two directional lights and a sky.
-// There are no surfaces: the medium is the whole scene.
+// By default there are no surfaces: the medium is the whole scene. `surface` places one where the
+// cloud meets it (a ground plane through its base, or a slab through its middle), for the book's
+// Fig. 9.8, where billboards clip against objects inside a medium.
 //
 // Shape: 5–9 ellipsoidal lobes (a large core, a crown on top of it and a ring of smaller lobes on
 // a base disk) cut off below by a flat base, filled with particles that are large and dense in
@@ -15,6 +17,7 @@
 // rounding almost never, so the scene hash is the same with any standard library.
 #include "common/splitmix.h"
 #include "scene/builtin_scenes.h"
+#include "scene/mesh_builder.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -23,6 +26,7 @@
 #include <cstdint>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -147,6 +151,39 @@ MediumParticle makeParticle(const std::vector<Lobe>& lobes, std::uint64_t seed, 
   return particle;
 }
 
+// Step: the optional surface through the cloud, grey Lambert (ρ = 0.5). The ground lies 0.2 m
+// above the base, so that the lowest particles reach through it; the slab (a wall 6 m wide, 3.6 m
+// high and 0.3 m thick) stands across the cloud's middle facing the camera, so that the front
+// half's particles meet it all over the image. Reflection is two-sided; the front side matters
+// only for emission.
+void addSurface(Scene& scene, std::string_view surface) {
+  if (surface == "none") return;
+  Material grey;
+  grey.name = "grey";
+  grey.diffuse = Rgb(0.5f);
+  scene.materials.push_back(grey);
+  Mesh mesh;
+  mesh.name = std::string(surface);
+  mesh.material = std::uint32_t(scene.materials.size() - 1);
+  if (surface == "ground") {
+    constexpr float h = float(kBaseHeight) + 0.2f, e = 40.0f;
+    appendQuad(mesh, {-e, h, e}, {e, h, e}, {e, h, -e}, {-e, h, -e});
+  } else {
+    const glm::vec3 lo(-3.0f, 0.4f, -0.15f), hi(3.0f, 4.0f, 0.15f);
+    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
+                            {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
+                            {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    // Outward faces: bottom, top, back, front, left, right.
+    appendQuad(mesh, c[0], c[1], c[5], c[4]);
+    appendQuad(mesh, c[3], c[7], c[6], c[2]);
+    appendQuad(mesh, c[0], c[3], c[2], c[1]);
+    appendQuad(mesh, c[4], c[5], c[6], c[7]);
+    appendQuad(mesh, c[0], c[4], c[7], c[3]);
+    appendQuad(mesh, c[1], c[2], c[6], c[5]);
+  }
+  scene.meshes.push_back(std::move(mesh));
+}
+
 }  // namespace
 
 ParameterTable cloudParameters() {
@@ -161,6 +198,13 @@ ParameterTable cloudParameters() {
                        "single-scattering albedo σs/σt of the medium, the same in R, G and B"),
       numericParameter("g", ParameterType::kNumber, "0", -0.95, 0.95, "",
                        "Henyey–Greenstein asymmetry of the phase function (0: isotropic)"),
+      numericParameter("lights", ParameterType::kInteger, "2", 1, 4, "",
+                       "directional lights: the key, the fill (the default two), light from "
+                       "above, a front light"),
+      choiceParameter("sky", "true", {"true", "false"}, "the blue sky around the cloud"),
+      choiceParameter("surface", "none", {"none", "ground", "slab"},
+                      "a grey surface the cloud meets: none, a ground plane through its base, or "
+                      "a wall through its middle (the book's Fig. 9.8)"),
   };
 }
 
@@ -191,8 +235,18 @@ Scene makeCloud(const ParameterValues& parameters) {
   DirectionalLight fill;
   fill.direction = glm::normalize(glm::vec3(-0.7f, -0.2f, 0.6f));
   fill.irradiance = {0.45f, 0.55f, 0.75f};
-  scene.directional_lights = {key, fill};
-  scene.sky_radiance = {0.12f, 0.17f, 0.28f};
+  // Two more for the book's claim that the network's frame time hardly depends on the number of
+  // lights (`lights` = 3, 4): light from above (a brighter layer of haze) and a weak front light.
+  DirectionalLight above;
+  above.direction = glm::normalize(glm::vec3(-0.2f, -0.9f, -0.4f));
+  above.irradiance = {0.5f, 0.5f, 0.55f};
+  DirectionalLight front;
+  front.direction = glm::normalize(glm::vec3(-0.3f, -0.4f, -0.85f));
+  front.irradiance = {0.35f, 0.33f, 0.3f};
+  const std::vector<DirectionalLight> lights = {key, fill, above, front};
+  scene.directional_lights.assign(lights.begin(), lights.begin() + parameters.integer("lights"));
+  if (parameters.text("sky") == "true") scene.sky_radiance = {0.12f, 0.17f, 0.28f};
+  addSurface(scene, parameters.text("surface"));
 
   // Step: camera. From the side, a little below the cloud's middle and looking slightly up, with
   // the whole cloud and some sky around it in view.

@@ -371,7 +371,7 @@ PreparedJob prepareJob(const Job& job) {
           parseParameters(p.technique->parameters, assignmentStrings(job.technique_parameters),
                           fmt::format("technique '{}'", job.technique));
       const std::unique_ptr<rt::Technique> technique = p.technique->create(*p.parameters);
-      p.path_class = technique->pathClass();
+      p.path_class = technique->pathClassAfter(job.settings.iterations.value_or(0));
       if (!job.settings.checkpoints.empty() && !technique->iterative())
         throw InputError(fmt::format(
             "checkpoints are iteration counts of an iterative technique, and '{}' renders in "

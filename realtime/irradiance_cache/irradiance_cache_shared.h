@@ -4,6 +4,7 @@
 // interpolate the same records to the same values.
 #pragma once
 #include "realtime/gl/host_device_shared.h"
+#include "realtime/gpu_scene/screen_rect_shared.h"
 
 #ifdef __cplusplus
 #include <glm/common.hpp>
@@ -51,25 +52,6 @@ GIB_SHARED_FUNCTION vec3 recordIrradiance(IrradianceRecord record, vec3 p, vec3 
   for (int c = 0; c < 3; ++c)
     e[c] += dot(axis, vec3(record.rotation[c])) + dot(offset, vec3(record.translation[c]));
   return max(e, vec3(0.0f));
-}
-
-// The screen rectangle (normalised device coordinates: x0, y0, x1, y1) that holds the projection
-// of the zone of influence, the sphere of radius a·R_k around P_k (outside it even the simplified
-// weight R_k/|P − P_k| is at most 1/a): the projected corners of the sphere's bounding box in view
-// space, or the whole screen when the box reaches behind the eye.
-GIB_SHARED_FUNCTION vec4 zoneScreenRect(mat4 view, mat4 projection, vec3 centre, float radius) {
-  vec3 c = vec3(view * vec4(centre, 1.0f));
-  vec2 lo = vec2(1.0f), hi = vec2(-1.0f);
-  for (int i = 0; i < 8; ++i) {
-    vec3 corner = c + radius * vec3((i & 1) != 0 ? 1.0f : -1.0f, (i & 2) != 0 ? 1.0f : -1.0f,
-                                    (i & 4) != 0 ? 1.0f : -1.0f);
-    vec4 clip = projection * vec4(corner, 1.0f);
-    if (clip.w <= 1e-6f * radius) return vec4(-1.0f, -1.0f, 1.0f, 1.0f);
-    vec2 ndc = vec2(clip) / clip.w;
-    lo = min(lo, ndc);
-    hi = max(hi, ndc);
-  }
-  return vec4(max(lo, vec2(-1.0f)), min(hi, vec2(1.0f)));
 }
 
 // Duff et al. 2017's branchless orthonormal basis around a unit normal: tangent and bitangent,

@@ -10,8 +10,8 @@ namespace gib::rt {
 glm::ivec4 zonePixelRect(const CameraTransform& camera, int width, int height,
                          const gpu::IrradianceRecord& record, float accuracy) {
   const glm::vec4 ndc =
-      gpu::zoneScreenRect(camera.view, camera.projection, glm::vec3(record.position_radius),
-                          accuracy * record.position_radius.w);
+      gpu::sphereScreenRect(camera.view, camera.projection, glm::vec3(record.position_radius),
+                            accuracy * record.position_radius.w);
   // Pixel i's centre is at NDC (i + 0.5)·2/width − 1.
   auto first = [](float ndc_value, int size) {
     return std::max(0, int(std::ceil((ndc_value + 1.0f) * 0.5f * float(size) - 0.5f)));

@@ -74,7 +74,7 @@ class RecordPlacement {
 };
 
 // The pixels (x0, y0, x1, y1 inclusive; x1 < x0 when none) whose centres lie in the zone rectangle
-// of a record: zoneScreenRect converted to a width × height image in GL row order.
+// of a record: sphereScreenRect converted to a width × height image in GL row order.
 glm::ivec4 zonePixelRect(const CameraTransform& camera, int width, int height,
                          const gpu::IrradianceRecord& record, float accuracy);
 

@@ -77,10 +77,12 @@ void DirectLighting::prepare(const GpuScene& scene) {
   shadow_maps_.emplace(shadow_settings_, scene,
                        shadowBatchCapacity(shadow_settings_, samples_.size()));
   emission_ = gl::FullScreenPass("realtime/lighting/emission.frag.glsl");
-  shade_point_ = gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
-                                    shadow_maps_->defines(LightSampleKind::kPoint));
-  shade_directional_ = gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
-                                          shadow_maps_->defines(LightSampleKind::kDirectional));
+  shade_point_ =
+      gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
+                         shadow_maps_->defines(LightSampleKind::kPoint) + shading_defines_);
+  shade_directional_ =
+      gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
+                         shadow_maps_->defines(LightSampleKind::kDirectional) + shading_defines_);
   shadow_maps_->setLookupConstants(shade_point_.program());
   shadow_maps_->setLookupConstants(shade_directional_.program());
   const gl::Program& emission = emission_.program();

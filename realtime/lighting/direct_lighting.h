@@ -53,6 +53,9 @@ class DirectLighting {
       PassDeclarations& passes, std::string_view parent,
       const std::vector<std::pair<std::string_view, std::string>>& view_passes = {});
 
+  // GLSL defines added to the camera's shading passes, set before prepare(): the particle
+  // techniques attenuate each sample by their medium (realtime/particles/).
+  void setShadingDefines(std::string defines) { shading_defines_ = std::move(defines); }
   // Places the light samples and builds the shadow maps and programs.
   void prepare(const GpuScene& scene);
 
@@ -87,6 +90,7 @@ class DirectLighting {
   std::vector<LightSample> samples_;
   glm::vec3 light_offset_{0.0f};
   std::optional<ShadowMaps> shadow_maps_;
+  std::string shading_defines_;
   gl::FullScreenPass emission_, shade_point_, shade_directional_;
 };
 

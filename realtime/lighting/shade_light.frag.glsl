@@ -1,10 +1,14 @@
 // Deferred shading of one batch of light samples (point or directional) in one pass, added to
 // the frame with additive blending: the sum over the batch of f · (incident irradiance) · cosθ ·
-// visibility at each pixel's primary hit.
+// visibility at each pixel's primary hit (and, with GIB_MEDIUM_TRANSMITTANCE, the particle medium's
+// transmittance towards the sample).
 #include "realtime/gpu_scene/scene.glsl"
 #include "realtime/gpu_scene/brdf.glsl"
 #include "realtime/gbuffer/shaded_surface.glsl"
 #include "realtime/lighting/shadowed_irradiance.glsl"
+#ifdef GIB_MEDIUM_TRANSMITTANCE
+#include "realtime/particles/medium_transmittance.glsl"
+#endif
 
 layout(location = 0) out vec4 o_radiance;
 
@@ -22,6 +26,13 @@ void main() {
   for (int k = 0; k < u_light_sample_count; ++k) {
     vec3 wi, irradiance;
     if (!shadowedIrradiance(k, p, n, wi, irradiance)) continue;
+#ifdef GIB_MEDIUM_TRANSMITTANCE
+#ifdef POINT_LIGHT
+    irradiance *= mediumTransmittance(p, wi, length(u_light_samples[k].position.xyz - p));
+#else
+    irradiance *= mediumTransmittance(p, wi, 3.0e38);
+#endif
+#endif
     radiance += evaluateBrdf(diffuse, specular, exponent, phong, n, wo, wi) * irradiance;
     lit = true;
   }

@@ -6,11 +6,14 @@
 #include "realtime/gl/shader_library.h"
 #include "realtime/gpu_scene/brdf_shared.h"
 #include "realtime/gpu_scene/gpu_scene_shared.h"
+#include "realtime/gpu_scene/screen_rect_shared.h"
 #include "realtime/irradiance_cache/irradiance_cache_shared.h"
 #include "realtime/lighting/light_sample_shared.h"
 #include "realtime/lighting/lighting_shared.h"
+#include "realtime/particles/particle_shared.h"
 #include "realtime/sh/spherical_harmonics_shared.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
+#include "realtime/techniques/illumination_network/illumination_network_shared.h"
 #include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
@@ -46,11 +49,14 @@ TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
       "realtime/gl/host_device_shared.h",
       "realtime/gpu_scene/brdf_shared.h",
       "realtime/gpu_scene/gpu_scene_shared.h",
+      "realtime/gpu_scene/screen_rect_shared.h",
       "realtime/irradiance_cache/irradiance_cache_shared.h",
       "realtime/lighting/light_sample_shared.h",
       "realtime/lighting/lighting_shared.h",
+      "realtime/particles/particle_shared.h",
       "realtime/sh/spherical_harmonics_shared.h",
       "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h",
+      "realtime/techniques/illumination_network/illumination_network_shared.h",
       "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h",
       "realtime/techniques/irradiance_volume/irradiance_volume_shared.h",
       "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h",
@@ -169,15 +175,26 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
         fixed(recordIrradiance(record, p, n).x)},
        {fixedGlsl("recordIrradiance(" + glsl_record + ", " + glsl_pn + ").y"),
         fixed(recordIrradiance(record, p, n).y)},
-       {fixedGlsl("zoneScreenRect(mat4(1.0), mat4(1.0), vec3(0.1, 0.2, -3.0), 0.5).z"),
-        fixed(zoneScreenRect(mat4(1.0f), mat4(1.0f), vec3(0.1f, 0.2f, -3.0f), 0.5f).z)},
+       {fixedGlsl("sphereScreenRect(mat4(1.0), mat4(1.0), vec3(0.1, 0.2, -3.0), 0.5).z"),
+        fixed(sphereScreenRect(mat4(1.0f), mat4(1.0f), vec3(0.1f, 0.2f, -3.0f), 0.5f).z)},
        {fixedGlsl("basisBitangent(normalize(vec3(0.3, -0.5, 0.8))).x"),
         fixed(basisBitangent(glm::normalize(vec3(0.3f, -0.5f, 0.8f))).x)},
        {fixedGlsl("pointSampleIrradiance(" + glsl_spot + ", vec3(0.5, 0, 0.2)).x"),
         fixed(pointSampleIrradiance(spot, vec3(0.5f, 0, 0.2f)).x)},
        {fixedGlsl("evaluateBrdf(vec3(0.5), vec3(0.3), 20.0, true, vec3(0, 0, 1), "
                   "normalize(vec3(0.2, 0, 1)), normalize(vec3(-0.1, 0.1, 1))).x"),
-        fixed(evaluateBrdf(vec3(0.5f), vec3(0.3f), 20.0f, true, vec3(0, 0, 1), wo, wi).x)}});
+        fixed(evaluateBrdf(vec3(0.5f), vec3(0.3f), 20.0f, true, vec3(0, 0, 1), wo, wi).x)},
+       // The particles' closed forms (billboards, volume shadow, network) and layout.
+       {fixedGlsl("chordOpticalDepth(1.7, 1.3, 0.4, -0.5, 0.9)"),
+        fixed(chordOpticalDepth(1.7f, 1.3f, 0.4f, -0.5f, 0.9f))},
+       {fixedGlsl("chordOpticalDepth(1.7, 1.3, 0.0, -5.0, 5.0)"),
+        fixed(chordOpticalDepth(1.7f, 1.3f, 0.0f, -5.0f, 5.0f))},
+       {fixedGlsl("henyeyGreensteinPhase(0.3, 0.6)"), fixed(henyeyGreensteinPhase(0.3f, 0.6f))},
+       {fixedGlsl("phaseTableCoordinate(-0.25)"), fixed(phaseTableCoordinate(-0.25f))},
+       {"kParticlesBinding", kParticlesBinding},
+       {"kIncomingRadianceBinding", kIncomingRadianceBinding},
+       {"kPhaseMatrixUnit", kPhaseMatrixUnit},
+       {"kSourceBinding", kSourceBinding}});
   std::vector<std::string> expressions;
   for (const auto& [expression, value] : cases) expressions.push_back(expression);
   const std::vector<int> gpu_values = evaluateOnGpu(expressions);

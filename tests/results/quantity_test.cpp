@@ -20,6 +20,13 @@ TEST(Quantity, NamesEveryKindOfNumberOfAJob) {
   // A parameter that is not a number has no value but names a series.
   EXPECT_EQ(quantityValue(job, "parameter:shadow"), std::nullopt);
   EXPECT_EQ(parameterText(job, "shadow"), "pcf");
+  // Scene parameters, named as job ids name them.
+  JobResult cloud = job;
+  cloud.scene_parameters = {{"particles", "512"}, {"surface", "slab"}};
+  EXPECT_EQ(quantityValue(cloud, "parameter:scene.particles"), 512.0);
+  EXPECT_EQ(parameterText(cloud, "scene.surface"), "slab");
+  EXPECT_EQ(parameterText(cloud, "scene.shadow"), std::nullopt);
+  EXPECT_EQ(parameterText(cloud, "particles"), std::nullopt);
   // Sums: a paper's row that spans several of our passes.
   EXPECT_EQ(quantityValue(job, "frame + iteration"), *job.frameMedianMs() + 2.25);
   EXPECT_EQ(quantityValue(job, "iteration+statistic:vertices"), 2.25 + 1536);

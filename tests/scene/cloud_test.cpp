@@ -118,6 +118,57 @@ TEST(CloudScene, DefaultHashIsPinned) {
   EXPECT_EQ(hashScene(makeCloudWith({})), "3732adb72b8f067f632ad49e693617d6");
 }
 
+// The surface the book's Fig. 9.8 needs: none by default (the hash above is unchanged), and where
+// asked a grey Lambertian ground or wall that particles reach through, each its own scene hash.
+TEST(CloudScene, SurfaceOptionPlacesAGreySurfaceThatParticlesReachThrough) {
+  const Scene none = makeCloudWith({"surface=none"});
+  EXPECT_TRUE(none.meshes.empty());
+  EXPECT_EQ(hashScene(none), hashScene(makeCloudWith({})));
+  std::vector<std::string> hashes{hashScene(none)};
+  for (const std::string surface : {"ground", "slab"}) {
+    const Scene s = makeCloudWith({"surface=" + surface});
+    ASSERT_EQ(s.meshes.size(), 1u) << surface;
+    const Material& m = s.materials.at(s.meshes[0].material);
+    EXPECT_EQ(m.diffuse, Rgb(0.5f));
+    EXPECT_FALSE(m.isEmissive());
+    EXPECT_NO_THROW(validateScene(s));
+    EXPECT_EQ(s.medium.particles.size(), none.medium.particles.size());
+    // Particles whose sphere the surface cuts: many, on both sides of it.
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (const glm::vec3& p : s.meshes[0].positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    int cut = 0;
+    for (const MediumParticle& p : s.medium.particles) {
+      const glm::vec3 nearest = glm::clamp(p.centre, lo, hi);
+      const bool inside = nearest == p.centre;
+      if (!inside && glm::length(nearest - p.centre) < p.radius) ++cut;
+    }
+    EXPECT_GT(cut, 20) << surface;
+    hashes.push_back(hashScene(s));
+  }
+  std::sort(hashes.begin(), hashes.end());
+  EXPECT_EQ(std::unique(hashes.begin(), hashes.end()), hashes.end());
+}
+
+// The book times the network with one to several lights, with and without the sky: `lights`
+// keeps the first n of the four, `sky=false` turns the sky off; the defaults are the two lights
+// and the sky of the pinned hash.
+TEST(CloudScene, LightsAndSkyFollowTheParameters) {
+  const Scene two = makeCloudWith({});
+  EXPECT_EQ(two.directional_lights.size(), 2u);
+  EXPECT_GT(two.sky_radiance.b, 0.0f);
+  for (int n = 1; n <= 4; ++n) {
+    const Scene s = makeCloudWith({"lights=" + std::to_string(n)});
+    ASSERT_EQ(s.directional_lights.size(), std::size_t(n));
+    for (std::size_t i = 0; i < std::min<std::size_t>(2, s.directional_lights.size()); ++i)
+      EXPECT_EQ(s.directional_lights[i].direction, two.directional_lights[i].direction);
+  }
+  EXPECT_EQ(makeCloudWith({"sky=false"}).sky_radiance, Rgb(0.0f));
+  EXPECT_THROW(makeCloudWith({"lights=5"}), InputError);
+}
+
 TEST(CloudScene, ParticlesStayInsideTheCloudsBox) {
   // Lobes reach at most 5.1 m from the axis in x and 3.9 m in z, and particle centres lie between
   // the base (0.4 m) and the crown's top (6.0 m); particles reach ≤ 1.1 m beyond (1024 particles).

@@ -42,10 +42,11 @@ std::unique_ptr<Technique> createTechnique(const std::string& name,
 
 void benchmarkTechniqueIterations(benchmark::State& state, const std::string& technique_name,
                                   const std::vector<std::string>& set,
-                                  const std::string& scene_name, int warmup_iterations) {
+                                  const std::string& scene_name, int warmup_iterations,
+                                  const std::vector<std::string>& scene_set) {
   gl::Context& context = benchContext();
   context.makeCurrent();
-  const scene::Scene scene = scene::loadScene(scene_name, {});
+  const scene::Scene scene = scene::loadScene(scene_name, scene_set);
   std::unique_ptr<Technique> technique = createTechnique(technique_name, set);
   GpuScene gpu_scene(scene, 64, 64);  // the camera image is not drawn
   technique->prepare(gpu_scene, 64, 64);
@@ -62,10 +63,11 @@ void benchmarkTechniqueIterations(benchmark::State& state, const std::string& te
 
 void benchmarkTechniqueFrames(benchmark::State& state, const std::string& technique_name,
                               const std::vector<std::string>& set, const std::string& scene_name,
-                              int size, int width, const TechniqueServices& services) {
+                              int size, int width, const TechniqueServices& services,
+                              const std::vector<std::string>& scene_set) {
   gl::Context& context = benchContext();
   context.makeCurrent();
-  const scene::Scene scene = scene::loadScene(scene_name, {});
+  const scene::Scene scene = scene::loadScene(scene_name, scene_set);
   std::unique_ptr<Technique> technique = createTechnique(technique_name, set);
   const int w = width > 0 ? width : size;
   GpuScene gpu_scene(scene, w, size);

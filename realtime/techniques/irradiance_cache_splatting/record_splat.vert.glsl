@@ -10,7 +10,7 @@ flat out int v_record;
 
 void main() {
   IrradianceRecord record = records[gl_InstanceID];
-  vec4 rect = zoneScreenRect(camera.view, camera.projection, record.position_radius.xyz,
+  vec4 rect = sphereScreenRect(camera.view, camera.projection, record.position_radius.xyz,
                              u_accuracy * record.position_radius.w);
   vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
   gl_Position = vec4(mix(rect.xy, rect.zw, corner), 0.0, 1.0);

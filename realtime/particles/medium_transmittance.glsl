@@ -1,0 +1,25 @@
+// The transmittance of the particle medium from a surface point towards a light sample, for the
+// surface shading of the particle techniques (DirectLighting::setShadingDefines with
+// GIB_MEDIUM_TRANSMITTANCE): exp(−Σ optical depth) of every particle's chord along the segment
+// from p towards the light (to its position for a point sample, to infinity for a directional
+// one). N particles per pixel and sample: meant for the book's thousands of particles.
+#include "realtime/particles/particle_shared.h"
+
+layout(std430, binding = kParticlesBinding) readonly buffer MediumParticles {
+  GpuParticle medium_particles[];
+};
+
+float mediumTransmittance(vec3 p, vec3 wi, float distance) {
+  float depth = 0.0;
+  for (int q = 0; q < medium_particles.length(); ++q) {
+    vec4 sphere = medium_particles[q].centre_radius;
+    vec3 v = sphere.xyz - p;
+    float t = dot(v, wi);
+    if (t < -sphere.w || t > distance + sphere.w) continue;
+    float d2 = dot(v, v) - t * t;
+    if (d2 >= sphere.w * sphere.w) continue;
+    depth += chordOpticalDepth(medium_particles[q].density.x, sphere.w, sqrt(max(d2, 0.0)), -t,
+                               distance - t);
+  }
+  return exp(-depth);
+}
