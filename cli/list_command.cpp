@@ -73,6 +73,8 @@ void listTechniques() {
     fmt::print("{:<{}} {}\n", info.name, width, info.description);
     fmt::print("{:<{}}   source: {}\n", "", width, info.source);
     fmt::print("{:<{}}   path class (defaults): {}\n", "", width, defaultPathClass(info));
+    if (info.requires_medium)
+      fmt::print("{:<{}}   scenes: those with a participating medium (cloud)\n", "", width);
     for (const std::string& line : describeParameters(info.parameters))
       fmt::print("{:<{}}   --set {}\n", "", width, line);
     std::vector<std::string> passes;

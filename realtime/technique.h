@@ -104,6 +104,9 @@ struct TechniqueInfo {
   // Every pass its frames and iterations may time, whatever the parameters (a variance shadow
   // map's filter, a GPU selection's pyramid): the runner refuses a profile with any other.
   PassDeclarations passes;
+  // Renders a participating medium and refuses scenes without one (the cloud's techniques): the
+  // nightly suite covers it on the scenes that have particles.
+  bool requires_medium = false;
   std::function<std::unique_ptr<Technique>(const ParameterValues&)> create;
 };
 

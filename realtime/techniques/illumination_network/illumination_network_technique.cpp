@@ -199,6 +199,7 @@ TechniqueInfo illuminationNetworkTechniqueInfo() {
                   "J = E + a·Σ_d I p / Σ_d p: each particle's radiance towards each direction");
   info.passes.add(passPath({kIterationPass, kTransportPass}),
                   "I gathered along each particle's chain in V, the sky at its end");
+  info.requires_medium = true;
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IlluminationNetworkTechnique>(values);
   };

@@ -112,6 +112,7 @@ TechniqueInfo sphericalBillboardsTechniqueInfo() {
   info.passes.add(passPath({kFramePass, kVolumeShadowPass}),
                   "each particle's transmittance towards the lights and the sky directions "
                   "through the rest of the medium");
+  info.requires_medium = true;
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<SphericalBillboardsTechnique>(values);
   };
