@@ -194,6 +194,36 @@ TEST_F(SphericalBillboards, SphericalBillboardsClipAgainstSurfacesAndPlanarOnesV
   EXPECT_GT(clipped, 40);
 }
 
+// A camera inside a particle (the book's popping, Fig. 9.4): a spherical billboard integrates the
+// segment from the near plane to the sphere's exit (within 1e-3 of the march), wherever the eye is
+// in the sphere. A planar billboard takes the whole chord while the centre is ahead, behind the
+// eye too (darker than the truth), and vanishes once the centre is behind the eye: transmittance 1.
+TEST_F(SphericalBillboards, SphericalBillboardsDoNotPopWhenTheCameraIsInsideAParticle) {
+  constexpr int kSize = 24;
+  for (float eye_z : {0.5f, -0.5f}) {
+    scene::Scene s = oneParticle(false);
+    s.camera.position = {0.0f, 0.0f, eye_z};
+    s.camera.look_at = {0.0f, 0.0f, eye_z - 1.0f};
+    const scene::DensityGrid medium(s.medium.particles);
+    const image::Image spherical =
+        test::renderOneFrame(s, "spherical_billboards", {"billboard=spherical"}, kSize).image;
+    const image::Image planar =
+        test::renderOneFrame(s, "spherical_billboards", {"billboard=planar"}, kSize).image;
+    for (int y = 0; y < kSize; y += 3)
+      for (int x = 0; x < kSize; x += 3) {
+        const ParticleRay ray = pixelRay(s, kSize, x, y, false);
+        const double ahead =
+            std::exp(-marchedOpticalDepth(medium, ray.origin, ray.direction, 0.0, 2.0, 4000));
+        EXPECT_NEAR(spherical.pixel(x, y)[0], ahead, 1e-3) << eye_z << " " << x << "," << y;
+        if (eye_z < 0) {
+          EXPECT_EQ(planar.pixel(x, y)[0], 1.0f) << x << "," << y;
+        } else {
+          EXPECT_LT(planar.pixel(x, y)[0], ahead - 0.02) << x << "," << y;
+        }
+      }
+  }
+}
+
 // Surfaces are lit through the medium: a particle between a directional light and a floor
 // darkens the floor by its transmittance along the light's direction (within 1e-3 of a march),
 // and surface_shadow=false leaves the floor lit as if the medium were not there.
