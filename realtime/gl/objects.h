@@ -72,6 +72,14 @@ class Buffer {
   std::size_t bytes_ = 0;
 };
 
+// The first `count` values of type T of a buffer, read back (waits for the GPU).
+template <typename T>
+std::vector<T> readBuffer(const Buffer& buffer, std::size_t count) {
+  std::vector<T> values(count);
+  glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(count * sizeof(T)), values.data());
+  return values;
+}
+
 // A texture with immutable storage. Float formats (GL_RGBA32F, GL_R32F, GL_RG32F, GL_RGBA16F,
 // GL_DEPTH_COMPONENT32F) are what the techniques use; any sized format works.
 class Texture {

@@ -11,15 +11,7 @@ layout(std430, binding = kParticlesBinding) readonly buffer MediumParticles {
 
 float mediumTransmittance(vec3 p, vec3 wi, float distance) {
   float depth = 0.0;
-  for (int q = 0; q < medium_particles.length(); ++q) {
-    vec4 sphere = medium_particles[q].centre_radius;
-    vec3 v = sphere.xyz - p;
-    float t = dot(v, wi);
-    if (t < -sphere.w || t > distance + sphere.w) continue;
-    float d2 = dot(v, v) - t * t;
-    if (d2 >= sphere.w * sphere.w) continue;
-    depth += chordOpticalDepth(medium_particles[q].density.x, sphere.w, sqrt(max(d2, 0.0)), -t,
-                               distance - t);
-  }
+  for (int q = 0; q < medium_particles.length(); ++q)
+    depth += particleSegmentDepth(medium_particles[q], p, wi, distance);
   return exp(-depth);
 }

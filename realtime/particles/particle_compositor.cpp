@@ -25,10 +25,6 @@ BillboardSettings billboardSettings(const ParameterValues& p) {
   return s;
 }
 
-GLuint groupsFor(int count) {
-  return GLuint((count + gpu::kParticleGroupSize - 1) / gpu::kParticleGroupSize);
-}
-
 }  // namespace
 
 ParticleCompositor::ParticleCompositor(const ParameterValues& parameters)
@@ -68,8 +64,9 @@ void ParticleCompositor::declarePasses(PassDeclarations& passes) {
              "a billboard per particle: the opacity of its ray segment, blended back to front");
 }
 
-void ParticleCompositor::prepare(const GpuScene& scene) {
+void ParticleCompositor::prepare(const GpuScene& scene, const ParticleMedium& medium) {
   scene_ = &scene;
+  medium_ = &medium;
   gbuffer_.emplace(scene.width(), scene.height());
   lighting_.prepare(scene);
   const std::string folder = "realtime/particles/";
@@ -82,6 +79,15 @@ void ParticleCompositor::prepare(const GpuScene& scene) {
   const glm::mat4 inverse = glm::inverse(scene.camera().projection * scene.camera().view);
   glProgramUniformMatrix4fv(splat_.id(), splat_.uniform("u_inverse_view_projection"), 1, GL_FALSE,
                             glm::value_ptr(inverse));
+  // What does not change between frames (the medium, its lights, the camera) is set once.
+  for (const gl::Program* program : {&shading_, &sort_}) {
+    medium.setUniforms(*program);
+    glProgramUniform1i(program->id(), program->uniform("u_count"), medium.count());
+    glProgramUniform3fv(program->id(), program->uniform("u_eye"), 1,
+                        glm::value_ptr(scene.camera().position));
+  }
+  source_ = gl::Buffer(std::size_t(medium.count()) * sizeof(glm::vec4), nullptr);
+  order_ = gl::Buffer(std::size_t(medium.count()) * sizeof(std::uint32_t), nullptr);
 }
 
 void ParticleCompositor::setSpherical(bool spherical) {
@@ -89,52 +95,43 @@ void ParticleCompositor::setSpherical(bool spherical) {
   glProgramUniform1i(splat_.id(), splat_.uniform("u_spherical"), spherical ? 1 : 0);
 }
 
-void ParticleCompositor::renderSurfaces(const ParticleMedium& medium, Frame& frame) {
+void ParticleCompositor::renderSurfaces(Frame& frame) {
   const GpuScene& scene = *scene_;
   gbuffer_->render(scene, &frame.profiler);
   lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
   if (scene.vertexCount() == 0) return;
-  medium.bind();  // the shading passes' medium_transmittance.glsl reads the particles
+  medium_->bind();  // the shading passes' medium_transmittance.glsl reads the particles
   lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
 }
 
-void ParticleCompositor::shade(const ParticleMedium& medium, const ParticleIncoming& incoming,
-                               gl::PassProfiler& profiler) {
+void ParticleCompositor::shade(const ParticleIncoming& incoming, gl::PassProfiler& profiler) {
   auto pass = profiler.pass(kParticleShadingPass);
-  const std::size_t bytes = std::size_t(medium.count()) * sizeof(glm::vec4);
-  if (source_.bytes() < bytes) source_ = gl::Buffer(bytes, nullptr);
+  const ParticleMedium& medium = *medium_;
   medium.bind();
-  medium.setUniforms(shading_);
   const GLuint id = shading_.id();
-  glProgramUniform1i(id, shading_.uniform("u_count"), medium.count());
   glProgramUniform1i(id, shading_.uniform("u_stride"), incoming.stride);
   glProgramUniform1i(id, shading_.uniform("u_direction_count"), incoming.direction_count);
   glProgramUniform1i(id, shading_.uniform("u_sky_through_transmittance"),
                      incoming.radiance ? 0 : 1);
-  glProgramUniform3fv(id, shading_.uniform("u_eye"), 1, glm::value_ptr(scene_->camera().position));
   incoming.transmittance->bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTransmittanceBinding);
   incoming.directions->bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSphereDirectionsBinding);
   if (incoming.radiance)
     incoming.radiance->bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kIncomingRadianceBinding);
   source_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kParticleSourceBinding);
   shading_.use();
-  gl::dispatchCompute(groupsFor(medium.count()), 1, 1);
+  gl::dispatchCompute(particleGroups(medium.count()), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void ParticleCompositor::sortAndSplat(const ParticleMedium& medium, Frame& frame) {
+void ParticleCompositor::sortAndSplat(Frame& frame) {
   const GpuScene& scene = *scene_;
+  const ParticleMedium& medium = *medium_;
   medium.bind();
   {
     auto pass = frame.profiler.pass(kParticleSortPass);
-    const std::size_t bytes = std::size_t(medium.count()) * sizeof(std::uint32_t);
-    if (order_.bytes() < bytes) order_ = gl::Buffer(bytes, nullptr);
-    glProgramUniform1i(sort_.id(), sort_.uniform("u_count"), medium.count());
-    glProgramUniform3fv(sort_.id(), sort_.uniform("u_eye"), 1,
-                        glm::value_ptr(scene.camera().position));
     order_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kParticleOrderBinding);
     sort_.use();
-    gl::dispatchCompute(groupsFor(medium.count()), 1, 1);
+    gl::dispatchCompute(particleGroups(medium.count()), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   auto pass = frame.profiler.pass(kBillboardPass);

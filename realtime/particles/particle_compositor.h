@@ -48,16 +48,16 @@ class ParticleCompositor {
   // The frame passes: the surfaces', kParticleShadingPass, kParticleSortPass, kBillboardPass.
   static void declarePasses(PassDeclarations& passes);
 
-  void prepare(const GpuScene& scene);
+  // Builds the programs for `scene` and `medium`, which must outlive the compositor's frames.
+  void prepare(const GpuScene& scene, const ParticleMedium& medium);
   // The surfaces into frame.target: the G-buffer, the sky and emitters seen directly, direct
   // light through the medium (skipped in a scene of particles alone).
-  void renderSurfaces(const ParticleMedium& medium, Frame& frame);
+  void renderSurfaces(Frame& frame);
   // Each particle's radiance towards the eye per unit opacity, from the lights (through the
   // first medium.lightCount() transmittances) and `incoming`.
-  void shade(const ParticleMedium& medium, const ParticleIncoming& incoming,
-             gl::PassProfiler& profiler);
+  void shade(const ParticleIncoming& incoming, gl::PassProfiler& profiler);
   // The particles sorted back to front and their billboards blended into frame.target.
-  void sortAndSplat(const ParticleMedium& medium, Frame& frame);
+  void sortAndSplat(Frame& frame);
 
   // Each particle's radiance towards the eye of the last shade() (tests).
   const gl::Buffer& source() const { return source_; }
@@ -70,6 +70,7 @@ class ParticleCompositor {
   BillboardSettings billboard_;
   DirectLighting lighting_;
   const GpuScene* scene_ = nullptr;
+  const ParticleMedium* medium_ = nullptr;
   std::optional<GBuffer> gbuffer_;
   gl::Program shading_, sort_, splat_;
   gl::Buffer source_, order_;

@@ -34,6 +34,10 @@ std::vector<float> henyeyGreensteinTable(float g) {
   return table;
 }
 
+GLuint particleGroups(int count) {
+  return GLuint((count + gpu::kParticleGroupSize - 1) / gpu::kParticleGroupSize);
+}
+
 ParticleMedium::ParticleMedium(const scene::Scene& scene, std::string_view technique)
     : count_(int(scene.medium.particles.size())),
       albedo_(scene.medium.albedo),

@@ -22,6 +22,9 @@ std::vector<glm::vec4> sphereDirections(int count);
 // The phase function p(cos θ) at gpu::kPhaseTableSize evenly spaced cosines from −1 to 1.
 std::vector<float> henyeyGreensteinTable(float g);
 
+// Work groups of gpu::kParticleGroupSize invocations that cover `count` particles (or directions).
+GLuint particleGroups(int count);
+
 class ParticleMedium {
  public:
   // Uploads the particles of `scene`. Throws gib::InputError naming `technique` when the scene

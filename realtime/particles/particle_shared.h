@@ -71,6 +71,19 @@ GIB_SHARED_FUNCTION float chordOpticalDepth(float tau, float r, float d, float s
   return depth > 0.0f ? depth : 0.0f;
 }
 
+// Optical depth of particle q along origin + t·omega (omega unit) for t in [0, distance]: the
+// part of its chord on that segment (volume shadows, surfaces lit through the medium).
+GIB_SHARED_FUNCTION float particleSegmentDepth(GpuParticle q, vec3 origin, vec3 omega,
+                                               float distance) {
+  float r = q.centre_radius.w;
+  vec3 v = vec3(q.centre_radius) - origin;
+  float t = dot(v, omega);
+  if (t < -r || t > distance + r) return 0.0f;
+  float d2 = dot(v, v) - t * t;
+  if (d2 >= r * r) return 0.0f;
+  return chordOpticalDepth(q.density.x, r, sqrt(d2 > 0.0f ? d2 : 0.0f), -t, distance - t);
+}
+
 // Henyey–Greenstein p(θ) = (1 − g²) / (4π (1 + g² − 2g cos θ)^{3/2}), θ between the propagation
 // directions before and after scattering; the reference's phase function.
 GIB_SHARED_FUNCTION float henyeyGreensteinPhase(float cos_theta, float g) {

@@ -24,14 +24,7 @@ void main() {
   vec3 origin = particles[p].centre_radius.xyz;
   vec3 omega = directions[m].xyz;
   float depth = 0.0;
-  for (int q = 0; q < u_count; ++q) {
-    if (q == p) continue;
-    vec4 sphere = particles[q].centre_radius;
-    vec3 v = sphere.xyz - origin;
-    float t = dot(v, omega);
-    float d2 = dot(v, v) - t * t;
-    if (d2 >= sphere.w * sphere.w || t < -sphere.w) continue;
-    depth += chordOpticalDepth(particles[q].density.x, sphere.w, sqrt(max(d2, 0.0)), -t, 3.0e38);
-  }
+  for (int q = 0; q < u_count; ++q)
+    if (q != p) depth += particleSegmentDepth(particles[q], origin, omega, 3.0e38);
   transmittance[p * u_direction_count + m] = exp(-depth);
 }

@@ -267,8 +267,7 @@ TEST_F(SphericalBillboards, VolumeShadowEqualsARayMarchThroughTheOtherParticles)
   gl::Buffer transmittance;
   VolumeShadow().compute(medium, buffer, int(directions.size()), transmittance);
   const std::size_t n = s.medium.particles.size(), m = directions.size();
-  std::vector<float> gpu(n * m);
-  glGetNamedBufferSubData(transmittance.id(), 0, GLsizeiptr(gpu.size() * 4), gpu.data());
+  const std::vector<float> gpu = gl::readBuffer<float>(transmittance, n * m);
   double lowest = 1;
   for (std::size_t p = 0; p < n; ++p) {
     std::vector<scene::MediumParticle> others = s.medium.particles;

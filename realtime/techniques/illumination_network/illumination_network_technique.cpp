@@ -15,13 +15,6 @@ namespace {
 constexpr std::string_view kScatteringPass = "scattering";
 constexpr std::string_view kTransportPass = "transport";
 
-template <typename T>
-std::vector<T> readBuffer(const gl::Buffer& buffer, std::size_t count) {
-  std::vector<T> values(count);
-  glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(count * sizeof(T)), values.data());
-  return values;
-}
-
 // W[d, i] = p(ω_d·ω_i) / Σ_d' p(ω_d'·ω_i) at [d × D + i]: the scattering pass's phase function
 // between the network's directions, each column summing to one.
 std::vector<float> phaseMatrix(const std::vector<glm::vec4>& directions, float g) {
@@ -60,7 +53,7 @@ IlluminationNetworkTechnique::IlluminationNetworkTechnique(const ParameterValues
 
 void IlluminationNetworkTechnique::prepare(const GpuScene& scene, int /*width*/, int /*height*/) {
   medium_.emplace(scene.scene(), "illumination_network");
-  compositor_.prepare(scene);
+  compositor_.prepare(scene, *medium_);
   const std::string folder = "realtime/techniques/illumination_network/";
   auto build = [&](const char* file) {
     gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, folder + file}});
@@ -108,9 +101,7 @@ void IlluminationNetworkTechnique::dispatch(const gl::Program& program) const {
   medium_->bind();
   directions_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSphereDirectionsBinding);
   program.use();
-  gl::dispatchCompute(
-      GLuint((medium_->count() + gpu::kParticleGroupSize - 1) / gpu::kParticleGroupSize),
-      GLuint(direction_count_), 1);
+  gl::dispatchCompute(particleGroups(medium_->count()), GLuint(direction_count_), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -129,9 +120,7 @@ void IlluminationNetworkTechnique::step(gl::PassProfiler& profiler) {
     source_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSourceBinding);
     phase_matrix_.bind(gpu::kPhaseMatrixUnit);
     scattering_program_.use();
-    gl::dispatchCompute(
-        GLuint((direction_count_ + gpu::kParticleGroupSize - 1) / gpu::kParticleGroupSize),
-        GLuint(medium_->count()), 1);
+    gl::dispatchCompute(particleGroups(direction_count_), GLuint(medium_->count()), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   {
@@ -142,26 +131,26 @@ void IlluminationNetworkTechnique::step(gl::PassProfiler& profiler) {
 }
 
 void IlluminationNetworkTechnique::render(Frame& frame) {
-  compositor_.renderSurfaces(*medium_, frame);
+  compositor_.renderSurfaces(frame);
   compositor_.shade(
-      *medium_,
       {&transmittance_, medium_->lightCount(), &directions_buffer_, direction_count_, &incoming_},
       frame.profiler);
-  compositor_.sortAndSplat(*medium_, frame);
+  compositor_.sortAndSplat(frame);
 }
 
 std::vector<gpu::NetworkLink> IlluminationNetworkTechnique::visibility() const {
-  return readBuffer<gpu::NetworkLink>(visibility_, visibility_.bytes() / sizeof(gpu::NetworkLink));
+  return gl::readBuffer<gpu::NetworkLink>(visibility_,
+                                          visibility_.bytes() / sizeof(gpu::NetworkLink));
 }
 std::vector<glm::vec4> IlluminationNetworkTechnique::emission() const {
-  return readBuffer<glm::vec4>(emission_, emission_.bytes() / sizeof(glm::vec4));
+  return gl::readBuffer<glm::vec4>(emission_, emission_.bytes() / sizeof(glm::vec4));
 }
 std::vector<glm::vec4> IlluminationNetworkTechnique::incoming() const {
-  return readBuffer<glm::vec4>(incoming_, incoming_.bytes() / sizeof(glm::vec4));
+  return gl::readBuffer<glm::vec4>(incoming_, incoming_.bytes() / sizeof(glm::vec4));
 }
 std::vector<float> IlluminationNetworkTechnique::lightTransmittance() const {
-  return readBuffer<float>(transmittance_,
-                           std::size_t(medium_->count()) * std::size_t(medium_->lightCount()));
+  return gl::readBuffer<float>(transmittance_,
+                               std::size_t(medium_->count()) * std::size_t(medium_->lightCount()));
 }
 
 std::vector<TechniqueStatistic> IlluminationNetworkTechnique::statistics() const {

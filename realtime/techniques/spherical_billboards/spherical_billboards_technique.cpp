@@ -24,7 +24,7 @@ void SphericalBillboardsTechnique::prepare(const GpuScene& scene, int width, int
   width_ = width;
   height_ = height;
   medium_.emplace(scene.scene(), "spherical_billboards");
-  compositor_.prepare(scene);
+  compositor_.prepare(scene, *medium_);
   volume_shadow_.emplace();
   // Transmittance directions: towards each light, then the sky's (the D directions the view
   // shading weighs the sky with).
@@ -39,16 +39,16 @@ void SphericalBillboardsTechnique::prepare(const GpuScene& scene, int width, int
 }
 
 void SphericalBillboardsTechnique::render(Frame& frame) {
-  compositor_.renderSurfaces(*medium_, frame);
+  compositor_.renderSurfaces(frame);
   const int sky = int(sky_directions_buffer_.bytes() / sizeof(glm::vec4));
   const int stride = medium_->lightCount() + sky;
   {
     auto pass = frame.profiler.pass(kVolumeShadowPass);
     volume_shadow_->compute(*medium_, directions_, stride, transmittance_);
   }
-  compositor_.shade(*medium_, {&transmittance_, stride, &sky_directions_buffer_, sky, nullptr},
+  compositor_.shade({&transmittance_, stride, &sky_directions_buffer_, sky, nullptr},
                     frame.profiler);
-  compositor_.sortAndSplat(*medium_, frame);
+  compositor_.sortAndSplat(frame);
 }
 
 std::vector<AuxiliaryImage> SphericalBillboardsTechnique::auxiliaryImages() {
