@@ -34,7 +34,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
   render
       ->add_option("--replicas", o->replicas,
                    "independently scrambled batches whose spread gives the variance layer; must "
-                   "divide --spp (default: its largest divisor up to 8)")
+                   "divide --spp (default: its largest divisor up to 4)")
       ->group(kReference);
   render
       ->add_option("--sampler", o->sampler,

@@ -26,14 +26,23 @@ AreaLightSampler::AreaLightSampler(const scene::Scene& scene, const TriangleTabl
     pdf_area_[emitters_[k]] = float(power[k] / total / triangles[emitters_[k]].area);
   }
   if (!cdf_.empty()) cdf_.back() = 1.0;
+  for (std::size_t k = 0; k < cdf_.size(); ++k) {
+    const double share = cdf_[k] - (k > 0 ? cdf_[k - 1] : 0.0);
+    inverse_share_.push_back(share > 0 ? float(1.0 / share) : 0.0f);
+  }
 }
 
-AreaLightSample AreaLightSampler::sample(float u_select, glm::vec2 u_point) const {
-  auto it = std::upper_bound(cdf_.begin(), cdf_.end(), double(u_select));
+AreaLightSample AreaLightSampler::sample(glm::vec2 u) const {
+  // u.x chooses the triangle, then is stretched back over [0, 1) inside the chosen interval and
+  // reused: the one 2D point stays stratified over all emitters together, so the lights' share of
+  // the noise falls at the rate of the point set, not as a coin toss per sample between
+  // triangles (docs/rendering.md, "Sampling").
+  auto it = std::upper_bound(cdf_.begin(), cdf_.end(), double(u.x));
   std::size_t k = std::min<std::size_t>(it - cdf_.begin(), emitters_.size() - 1);
+  u.x = reuseAfterChoice(u.x, k > 0 ? float(cdf_[k - 1]) : 0.0f, inverse_share_[k]);
   AreaLightSample s;
   s.triangle = emitters_[k];
-  glm::vec2 b = sampleUniformTriangle(u_point);
+  glm::vec2 b = sampleUniformTriangle(u);
   // sampleUniformTriangle weights vertices 0 and 1; in edge form p = p0 + b1·e1 + b2·e2 with
   // b1 the weight of vertex 1 and b2 = 1 − b0 − b1 that of vertex 2.
   s.point = triangles_[s.triangle].point(b.y, 1.0f - b.x - b.y);

@@ -21,7 +21,8 @@ class AreaLightSampler {
   AreaLightSampler(const scene::Scene& scene, const TriangleTable& triangles);
 
   bool empty() const { return emitters_.empty(); }
-  AreaLightSample sample(float u_select, glm::vec2 u_point) const;
+  // One uniform 2D point chooses the triangle (by its first coordinate) and the point on it.
+  AreaLightSample sample(glm::vec2 u) const;
   // Density per unit area at a point of the given triangle (0 for a non-emitter).
   float pdfArea(std::uint32_t triangle) const { return pdf_area_[triangle]; }
 
@@ -29,6 +30,7 @@ class AreaLightSampler {
   const TriangleTable& triangles_;
   std::vector<std::uint32_t> emitters_;  // global indices of emitting triangles
   std::vector<double> cdf_;              // cumulative power, normalised to 1
+  std::vector<float> inverse_share_;     // 1 / (cdf_[k] − cdf_[k − 1])
   std::vector<float> pdf_area_;          // per global triangle
 };
 

@@ -39,13 +39,19 @@ float Bsdf::pdf(const glm::vec3& wi) const {
   return p;
 }
 
-BsdfSample Bsdf::sample(float u_lobe, glm::vec2 u_dir) const {
+BsdfSample Bsdf::sample(glm::vec2 u) const {
   BsdfSample s;
   if (isBlack()) return s;
-  if (u_lobe < select_glossy_)
-    s.wi = Frame(mirror_).toWorld(samplePhongLobe(u_dir, material_.exponent));
-  else
-    s.wi = Frame(n_).toWorld(sampleCosineHemisphere(u_dir));
+  // u.x picks the lobe and is reused for the direction (reuseAfterChoice); with one lobe it
+  // is used as it is.
+  const bool mixed = select_glossy_ > 0 && select_glossy_ < 1;
+  if (u.x < select_glossy_) {
+    if (mixed) u.x = reuseAfterChoice(u.x, 0.0f, 1.0f / select_glossy_);
+    s.wi = Frame(mirror_).toWorld(samplePhongLobe(u, material_.exponent));
+  } else {
+    if (mixed) u.x = reuseAfterChoice(u.x, select_glossy_, 1.0f / (1.0f - select_glossy_));
+    s.wi = Frame(n_).toWorld(sampleCosineHemisphere(u));
+  }
   s.pdf = pdf(s.wi);
   s.f = evaluate(s.wi);
   return s;

@@ -25,10 +25,11 @@ class Bsdf {
   Rgb evaluate(const glm::vec3& wi) const;
   // Density of `sample` choosing wi.
   float pdf(const glm::vec3& wi) const;
-  // Chooses the diffuse or the glossy lobe in proportion to their luminance, then samples a
-  // cosine hemisphere or the Phong lobe around the mirror direction. A direction below the
-  // surface comes back with f = 0 (the path ends there) but a valid pdf.
-  BsdfSample sample(float u_lobe, glm::vec2 u_dir) const;
+  // Chooses the diffuse or the glossy lobe in proportion to their luminance with u.x, then
+  // samples a cosine hemisphere or the Phong lobe around the mirror direction with u (u.x
+  // stretched back over [0, 1)). A direction below the surface comes back with f = 0 (the path
+  // ends there) but a valid pdf.
+  BsdfSample sample(glm::vec2 u) const;
 
   bool isBlack() const { return select_glossy_ <= 0 && diffuse_is_black_; }
 

@@ -19,6 +19,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstdint>
+#include <optional>
 
 namespace gib::ref {
 
@@ -26,14 +27,12 @@ namespace gib::ref {
 // 2D pair; the 1D decisions use its first coordinate.
 enum class VertexDimension : std::uint32_t {
   kFreeFlight,        // delta tracking's first draw on the segment that reaches the vertex
-  kLightChoice,       // which area light triangle
-  kLightPoint,        // the point on it
+  kLightPoint,        // which area light triangle (x), then the point on it (reused x, y)
   kLightShadow,       // ratio tracking's first draw on the shadow ray to it
   kSkyDirection,      // the sky sample's direction
   kSkyShadow,         // ratio tracking's first draw towards the sky
   kDeltaLightShadow,  // ratio tracking towards spot and directional light j, for j below:
-  kLobe = kDeltaLightShadow + 4,
-  kDirection,  // the BSDF or phase-function direction
+  kDirection = kDeltaLightShadow + 4,  // the BSDF lobe (x), then the direction (reused x, y)
   kRoulette,
   kCount
 };
@@ -52,7 +51,9 @@ class PathSampler {
         index_(sample / replicas),
         reversed_index_(reverseBits(index_)),
         sobol_(kind == SamplerKind::kSobol),
-        independent_(seed, pixel, sample) {}
+        seed_(seed),
+        pixel_(pixel),
+        sample_(sample) {}
 
   // The sample's position inside its pixel.
   glm::vec2 pixelPosition() const { return point2D(0); }
@@ -68,12 +69,16 @@ class PathSampler {
     return j < kDeltaLightShadowDimensions
                ? point1D(base_ + std::uint32_t(VertexDimension::kDeltaLightShadow) +
                          std::uint32_t(j))
-               : independent_.next();
+               : independent().next();
   }
 
   // For decisions whose number is not known in advance (the draws of a tracking walk after its
   // first): an independent stream of the same (seed, pixel, sample).
-  SampleStream& independent() { return independent_; }
+  SampleStream& independent() {
+    // Made on first use: paths without a medium (most) never draw from it.
+    if (!independent_) independent_.emplace(seed_, pixel_, sample_);
+    return *independent_;
+  }
 
   std::uint32_t index() const { return index_; }
 
@@ -107,7 +112,9 @@ class PathSampler {
       return {fixedToUnitFloat(std::uint32_t(bits)), fixedToUnitFloat(std::uint32_t(bits >> 32))};
     }
     const std::uint32_t j = shuffledIndex(hash);
-    const std::uint32_t y_seed = std::uint32_t(splitMixFinalise(hash));
+    // The second coordinate's scramble: the high half of the hash times an odd constant, which
+    // depends on all 64 bits of the hash (one multiplication instead of another mixer).
+    const std::uint32_t y_seed = std::uint32_t((hash * kGoldenGamma) >> 32);
     return {
         firstCoordinate(j, hash),
         fixedToUnitFloat(reverseBits(scrambleReversed(kSobolSecondDimensionReversed(j), y_seed)))};
@@ -117,8 +124,11 @@ class PathSampler {
   std::uint32_t index_;
   std::uint32_t reversed_index_;
   bool sobol_;
+  std::uint64_t seed_;
+  std::uint32_t pixel_;
+  std::uint32_t sample_;
   std::uint32_t base_ = 1;
-  SampleStream independent_;
+  std::optional<SampleStream> independent_;
 };
 
 }  // namespace gib::ref

@@ -76,9 +76,7 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
 
   // Area lights: one point chosen by power, weighted against BSDF or phase sampling.
   if (!area_lights_.empty()) {
-    const float u_select = sampler.get1D(VertexDimension::kLightChoice);
-    const glm::vec2 u_point = sampler.get2D(VertexDimension::kLightPoint);
-    const AreaLightSample s = area_lights_.sample(u_select, u_point);
+    const AreaLightSample s = area_lights_.sample(sampler.get2D(VertexDimension::kLightPoint));
     const TriangleRecord& light = triangles_[s.triangle];
     const glm::vec3 to_light = s.point - v.point;
     const float dist2 = glm::dot(to_light, to_light);
@@ -153,7 +151,8 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
 }
 
 RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
-                                    const glm::vec3& camera_direction, PathSampler& sampler) const {
+                                    const glm::vec3& camera_direction, PathSampler& sampler,
+                                    const Hit* first_hit) const {
   RadianceSample out;
   auto record = [&](int bounces, const Rgb& contribution) {
     if (!path_class_.contains(bounces)) return;
@@ -176,7 +175,8 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
     // found is number `bounces`, and draws from that vertex's dimensions.
     sampler.startVertex(bounces);
     ++out.rays;
-    const Hit hit = embree_.intersect(origin, direction);
+    const Hit hit = first_hit ? *first_hit : embree_.intersect(origin, direction);
+    first_hit = nullptr;
     const float t_surface = hit.valid() ? hit.t : kInfinity;
     const float t_medium =
         medium_ ? medium_->sampleCollision(
@@ -241,8 +241,7 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
       pdf = vertex.pdf(wi);
       // The phase function is its own density: the weight f/pdf is exactly 1.
     } else {
-      const BsdfSample s = bsdf->sample(sampler.get1D(VertexDimension::kLobe),
-                                        sampler.get2D(VertexDimension::kDirection));
+      const BsdfSample s = bsdf->sample(sampler.get2D(VertexDimension::kDirection));
       const float cos_wi = glm::dot(vertex.normal, s.wi);
       if (s.pdf <= 0 || cos_wi <= 0 || maxComponent(s.f) <= 0) break;
       wi = s.wi;

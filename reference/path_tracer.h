@@ -40,8 +40,10 @@ class PathTracer {
 
   PathTracer(const scene::Scene& scene, PathClass path_class);
 
-  RadianceSample radiance(const glm::vec3& origin, const glm::vec3& direction,
-                          PathSampler& sampler) const;
+  // The radiance arriving at `origin` from `direction`. `first_hit`, when given, is the closest
+  // hit of that ray, already traced by the caller (camera rays go to Embree in coherent batches).
+  RadianceSample radiance(const glm::vec3& origin, const glm::vec3& direction, PathSampler& sampler,
+                          const Hit* first_hit = nullptr) const;
 
   const EmbreeScene& embree() const { return embree_; }
   const PathClass& pathClass() const { return path_class_; }

@@ -12,6 +12,17 @@ namespace gib::ref {
 
 inline constexpr float kPi = std::numbers::pi_v<float>;
 inline constexpr float kInvPi = 1.0f / kPi;
+// The largest float below 1: uniform numbers live in [0, 1).
+inline constexpr float kOneBelow = 0x1.fffffep-1f;
+
+// A uniform number u in [0, 1) that chose the interval [low, low + width) of [0, 1), stretched
+// back over [0, 1): uniform again and independent of the choice, so one number can make a
+// discrete choice and then place a point, and a stratified point set stays stratified across
+// the choices. Takes 1 / width: a division here would sit on every path's critical chain.
+inline float reuseAfterChoice(float u, float low, float inverse_width) {
+  const float reused = (u - low) * inverse_width;
+  return reused < 0.0f ? 0.0f : (reused < kOneBelow ? reused : kOneBelow);
+}
 
 // An orthonormal basis around a unit vector (Duff et al. 2017, "Building an Orthonormal Basis,
 // Revisited": branchless and continuous except at n.z = −1 handled by the sign).

@@ -15,7 +15,7 @@
 # --own-truth measures each renderer against a long render of its own for an exact scene too:
 # its MSE is then its noise alone, without the small systematic difference between the renderers
 # (which the means and the worst block show). --replicas K is passed to `gibench render` (its
-# default: 8 replicas, the error bars' cost).
+# default: 4 replicas, the error bars' cost).
 #
 # --cycles-no-light-sampling renders both Cycles images with emissive meshes left to BSDF
 # sampling: noisier, but free of the slight darkening of Cycles' light sampling at grazing angles

@@ -52,7 +52,8 @@ TEST(ErrorBarCalibration, FurnacePixelsMissTheTruthAsOftenAsTheirErrorBarsSay) {
   const scene::Scene furnace = scene::loadScene("furnace");
   RenderSettings settings;
   settings.width = settings.height = 48;
-  // 8 replicas of 512 samples. Far fewer samples do not do: the furnace's paths are skewed
+  // 4 replicas (the default) of 1024 samples. Far fewer samples do not do: the furnace's paths
+  // are skewed
   // (skewness 4.7 per sample, from Russian roulette's rare survivors), and a replica mean that
   // missed the rare long paths has both a low mean and a low spread, so at 256 spp 5-9 times too
   // many pixels fall beyond 3 standard errors, on the low side (docs/rendering.md, "Error bars").
@@ -66,7 +67,7 @@ TEST(ErrorBarCalibration, FurnacePixelsMissTheTruthAsOftenAsTheirErrorBarsSay) {
   expectCalibrated(p_values, "furnace");
 
   // Read as a normal standard error, the same variance leaves too many pixels outside ±3
-  // (Student's t₇ puts 2% there, not 0.27%): the degrees of freedom are part of the error bar.
+  // (Student's t₃ puts 5.8% there, not 0.27%): the degrees of freedom are part of the error bar.
   std::size_t beyond_three = 0;
   for (std::size_t i = 0; i < r.mean.pixelCount(); ++i)
     beyond_three += std::abs(r.mean.data()[3 * i] - 1.0) > 3 * std::sqrt(r.variance.data()[3 * i]);

@@ -17,6 +17,9 @@ TEST(Furnace, EveryPixelIsOneWithinItsStandardError) {
   RenderSettings settings;
   settings.width = settings.height = 16;
   settings.spp = 256;
+  // 8 replicas rather than the default 4: with 7 degrees of freedom the per-value bound below is
+  // ~11 standard errors; with 3 it would be ~70, which tests little.
+  settings.replicas = 8;
   const RenderResult r = renderReference(furnace, settings);
 
   // Per pixel and channel, a two-sided test of (mean − 1)/standard error, which follows Student's

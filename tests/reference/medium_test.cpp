@@ -117,8 +117,11 @@ TEST(VolumetricFurnace, NonAbsorbingMediumUnderUniformSkyShowsTheSky) {
         EXPECT_LE(std::abs(r.mean.data()[i] - 0.7), t_max * se + 1e-5)
             << "value " << i << " = " << r.mean.data()[i] << " g " << g << " eye " << eye.x;
       }
+      // The image mean averages 432 values, so its statistic is close to normal. Four of them are
+      // tested: 3.5 standard errors each keeps the chance that a correct renderer fails one
+      // below 0.2% (3 would fail one run in ~90).
       const test::ImageMean m = test::imageMean(r);
-      EXPECT_NEAR(m.mean, 0.7, 3 * m.standard_error + 1e-6) << "g " << g;
+      EXPECT_NEAR(m.mean, 0.7, 3.5 * m.standard_error + 1e-6) << "g " << g;
     }
   }
 }

@@ -64,7 +64,7 @@ TEST(PathSampler, EveryPowerOfTwoPrefixIsAZeroNetInEachDimensionPair) {
 }
 
 TEST(PathSampler, OneDimensionalDecisionsAreStratified) {
-  for (VertexDimension d : {VertexDimension::kLightChoice, VertexDimension::kRoulette}) {
+  for (VertexDimension d : {VertexDimension::kLightShadow, VertexDimension::kRoulette}) {
     std::vector<float> u;
     for (std::uint32_t s = 0; s < 512; ++s) {
       PathSampler sampler(3, 11, s, 1);
@@ -100,10 +100,10 @@ TEST(PathSampler, PointsAreUniformOverPixelsAndDimensionsAreIndependent) {
     PathSampler sampler(1, pixel, 5, 1);
     sampler.startVertex(0);
     same_dimension.push_back(sampler.get2D(VertexDimension::kDirection));
-    const float light = sampler.get1D(VertexDimension::kLightChoice);
-    across_dimensions.push_back({light, sampler.get1D(VertexDimension::kLobe)});
+    const float light = sampler.get1D(VertexDimension::kLightPoint);
+    across_dimensions.push_back({light, sampler.get1D(VertexDimension::kDirection)});
     sampler.startVertex(1);
-    across_vertices.push_back({light, sampler.get1D(VertexDimension::kLightChoice)});
+    across_vertices.push_back({light, sampler.get1D(VertexDimension::kLightPoint)});
   }
   EXPECT_GT(uniformityPValue(same_dimension), kSignificance);
   EXPECT_GT(uniformityPValue(across_dimensions), kSignificance);

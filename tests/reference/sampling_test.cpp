@@ -63,8 +63,7 @@ TEST(SamplingChiSquare, PhongMaterialSamplerMatchesItsPdf) {
   // ends; the sampler's density there is the glossy share (0.5 / 0.8 by luminance) of the lobe.
   double p = chiSquarePValue(
       [&](SampleStream& r) {
-        float u = r.next();
-        return bsdf.sample(u, {r.next(), r.next()}).wi;
+        return bsdf.sample({r.next(), r.next()}).wi;
       },
       [&](const glm::vec3& w) {
         if (w.z > 0) return double(bsdf.pdf(w));
