@@ -43,6 +43,48 @@ std::vector<Tile> makeTiles(int width, int height) {
   return tiles;
 }
 
+// One pixel's camera rays for a run of its samples, traced together: rays through one pixel are
+// coherent, and Embree traces a batch as packets for a fraction of the cost of single rays. Each
+// hit is bit-identical to the single ray's (tested), so the image does not depend on the
+// batching. One per task, reused from pixel to pixel.
+class CameraBatch {
+ public:
+  CameraBatch() {
+    samplers_.reserve(kCameraBatch);
+    rays_.reserve(kCameraBatch);
+    hits_.reserve(kCameraBatch);
+  }
+
+  // Samples [first, end) of pixel (x, y), at most kCameraBatch of them.
+  void trace(const PathTracer& tracer, const scene::CameraFrame& camera,
+             const RenderSettings& settings, std::uint32_t replicas, int x, int y,
+             std::uint32_t first, std::uint32_t end) {
+    const auto pixel = std::uint32_t(y * settings.width + x);
+    samplers_.clear();
+    rays_.clear();
+    for (std::uint32_t s = first; s < end; ++s) {
+      samplers_.emplace_back(settings.seed, pixel, s, replicas, settings.sampler);
+      // Box filter: a uniform point in the pixel.
+      const glm::vec2 position = glm::vec2(x, y) + samplers_.back().pixelPosition();
+      rays_.push_back(
+          {camera.origin, scene::cameraRayDirection(camera, settings.width, settings.height,
+                                                    position.x, position.y)});
+    }
+    hits_.resize(rays_.size());
+    tracer.embree().intersect(rays_, hits_, /*coherent=*/true);
+  }
+
+  // The path of the batch's i-th sample, from its camera ray's hit on.
+  RadianceSample radiance(const PathTracer& tracer, std::size_t i) {
+    return tracer.radiance(rays_[i].origin, rays_[i].direction, samplers_[i], &hits_[i]);
+  }
+
+ private:
+  std::vector<PathSampler> samplers_;
+  std::vector<scene::Ray> rays_;
+  std::vector<Hit> hits_;
+};
+
 image::Image meanImage(const std::vector<PixelSums>& sums, int width, int height, std::uint32_t n) {
   image::Image mean(width, height);
   for (std::size_t i = 0; i < sums.size(); ++i)
@@ -120,42 +162,22 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   auto renderPass = [&](std::uint32_t first, std::uint32_t end) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](auto range) {
       std::uint64_t tile_rays = 0;
-      std::vector<PathSampler> samplers;
-      std::vector<scene::Ray> camera_rays;
-      std::vector<Hit> camera_hits;
-      samplers.reserve(kCameraBatch);
-      camera_rays.reserve(kCameraBatch);
+      CameraBatch batch;
       for (std::size_t t = range.begin(); t != range.end(); ++t) {
         const Tile& tile = tiles[t];
         for (int y = tile.y0; y < tile.y1; ++y)
           for (int x = tile.x0; x < tile.x1; ++x) {
-            const auto pixel = std::uint32_t(y * width + x);
+            const auto pixel = std::size_t(y) * width + x;
             PixelSums& acc = sums[pixel];
-            for (std::uint32_t batch = first; batch < end; batch += kCameraBatch) {
-              // The batch's camera rays go to Embree together: rays through one pixel are
-              // coherent, and traced as packets they cost a fraction of single rays. Each ray's
-              // hit is the same as alone, so the image does not depend on the batching.
-              const std::uint32_t batch_end = std::min(end, batch + kCameraBatch);
-              samplers.clear();
-              camera_rays.clear();
-              for (std::uint32_t s = batch; s < batch_end; ++s) {
-                samplers.emplace_back(settings.seed, pixel, s, replicas, settings.sampler);
-                // Box filter: a uniform point in the pixel.
-                const glm::vec2 position = glm::vec2(x, y) + samplers.back().pixelPosition();
-                camera_rays.push_back(
-                    {camera.origin,
-                     scene::cameraRayDirection(camera, width, height, position.x, position.y)});
-              }
-              camera_hits.resize(camera_rays.size());
-              tracer.embree().intersect(camera_rays, camera_hits, /*coherent=*/true);
-              for (std::uint32_t s = batch; s < batch_end; ++s) {
-                const std::size_t i = s - batch;
-                RadianceSample r = tracer.radiance(camera.origin, camera_rays[i].direction,
-                                                   samplers[i], &camera_hits[i]);
+            for (std::uint32_t batch_first = first; batch_first < end;
+                 batch_first += kCameraBatch) {
+              const std::uint32_t batch_end = std::min(end, batch_first + kCameraBatch);
+              batch.trace(tracer, camera, settings, replicas, x, y, batch_first, batch_end);
+              for (std::uint32_t s = batch_first; s < batch_end; ++s) {
+                const RadianceSample r = batch.radiance(tracer, s - batch_first);
                 tile_rays += r.rays;
                 double* replica =
-                    replicas > 1 ? &replica_sums[(std::size_t(pixel) * replicas + s % replicas) * 3]
-                                 : nullptr;
+                    replicas > 1 ? &replica_sums[(pixel * replicas + s % replicas) * 3] : nullptr;
                 for (int c = 0; c < 3; ++c) {
                   acc.sum[c] += r.total[c];
                   acc.direct[c] += r.direct[c];
