@@ -1,5 +1,6 @@
 #include "realtime/gbuffer/gbuffer.h"
 
+#include "realtime/gbuffer/gbuffer_views_shared.h"
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
@@ -7,6 +8,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -58,21 +60,33 @@ void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
 }
 
 void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>& views) {
-  if (!views_program_.id())
-    views_program_ = gl::buildProgram({{GL_VERTEX_SHADER, "realtime/gbuffer/gbuffer.vert.glsl"},
-                                       {GL_FRAGMENT_SHADER, "realtime/gbuffer/gbuffer.frag.glsl"}},
-                                      "#define EXPLICIT_VIEW 1\n");
+  if (!views_program_.id()) {
+    views_program_ = gl::buildLayeredProgram(
+        {"realtime/gbuffer/gbuffer.vert.glsl", "realtime/gbuffer/gbuffer_views.geom.glsl",
+         "realtime/gbuffer/gbuffer.frag.glsl"},
+        "#define EXPLICIT_VIEW 1\n", views_from_geometry_shader_, gl::InstanceTarget::kViewport);
+    views_ = gl::Buffer(sizeof(gpu::GBufferViewRecord) * gpu::kMaxGBufferViewsPerDraw, nullptr);
+  }
   clearAndSetState();
   views_program_.use();
   scene.bindSceneBuffers();
-  const GLint view_projection = views_program_.uniform("u_view_projection");
-  const GLint eye = views_program_.uniform("u_eye");
-  for (const GBufferView& view : views) {
-    glViewport(view.x, view.y, view.width, view.height);
-    glUniformMatrix4fv(view_projection, 1, GL_FALSE, glm::value_ptr(view.view_projection));
-    glUniform3fv(eye, 1, glm::value_ptr(view.eye));
-    scene.draw();
+  // One instanced draw per block of views, view i of a block in viewport i.
+  std::vector<gpu::GBufferViewRecord> records;
+  for (std::size_t first = 0; first < views.size(); first += gpu::kMaxGBufferViewsPerDraw) {
+    const std::size_t count =
+        std::min(views.size() - first, std::size_t(gpu::kMaxGBufferViewsPerDraw));
+    records.clear();
+    for (std::size_t i = first; i < first + count; ++i) {
+      const GBufferView& v = views[i];
+      records.push_back({v.view_projection, glm::vec4(v.eye, 1.0f)});
+      glViewportIndexedf(GLuint(i - first), float(v.x), float(v.y), float(v.width),
+                         float(v.height));
+    }
+    views_.update(0, records.size() * sizeof(gpu::GBufferViewRecord), records.data());
+    views_.bindBase(GL_UNIFORM_BUFFER, gpu::kGBufferViewsBinding);
+    scene.draw(int(count));
   }
+  glViewport(0, 0, width_, height_);  // every viewport of the array back to the whole buffer
 }
 
 void GBuffer::clearAndSetState() const {

@@ -9,12 +9,12 @@ layout(location = 1) out vec4 out_normal;    // geometric normal, front side; w:
 layout(location = 2) out vec4 out_albedo;    // diffuse reflectance, w: 1
 
 #ifdef EXPLICIT_VIEW
-uniform vec3 u_eye;
+flat in vec3 view_eye;
 #endif
 
 void main() {
 #ifdef EXPLICIT_VIEW
-  vec3 eye = u_eye;
+  vec3 eye = view_eye;
   // Turned towards the eye: a probe's view is shaded for the light it reflects, never for
   // emission, and the shading pass knows no other eye than the camera's.
   vec3 normal = dot(world_normal, eye - world_position) < 0.0 ? -world_normal : world_normal;

@@ -36,7 +36,8 @@ class GBuffer {
 
   // Rasterises the scene from its camera.
   void render(const GpuScene& scene, gl::PassProfiler* profiler = nullptr);
-  // Clears the whole buffer and rasterises each view into its rectangle.
+  // Clears the whole buffer and rasterises each view into its rectangle: instanced draws of up to
+  // gpu::kMaxGBufferViewsPerDraw views, instance i into viewport i of the viewport array.
   void renderViews(const GpuScene& scene, const std::vector<GBufferView>& views);
 
   // RGBA32F textures; background pixels have distance (w of position) and material = −1.
@@ -50,6 +51,13 @@ class GBuffer {
   int width() const { return width_; }
   int height() const { return height_; }
 
+  // renderViews selects each view's viewport in the geometry shader even where the vertex shader
+  // could (tests compare the two paths).
+  void selectViewportsInGeometryShader() {
+    views_from_geometry_shader_ = true;
+    views_program_ = gl::Program();
+  }
+
  private:
   int width_, height_;
   gl::Texture position_, normal_, albedo_, depth_;
@@ -58,6 +66,8 @@ class GBuffer {
   gl::Framebuffer framebuffer_;
   gl::Program program_;
   gl::Program views_program_;  // built on first use of renderViews
+  gl::Buffer views_;           // the views of one draw, gpu::GBufferViewRecord
+  bool views_from_geometry_shader_ = false;
 };
 
 }  // namespace gib::rt

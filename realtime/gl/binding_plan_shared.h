@@ -19,13 +19,14 @@ const int kAtlasPositionUnit = 8;   // atlas/: xyz sample point, w 1 inside a ch
 const int kAtlasNormalUnit = 9;     // atlas/: xyz unit normal, w world area of the texel
 const int kAtlasAlbedoUnit = 10;    // atlas/: rgb diffuse reflectance
 const int kAtlasEmissionUnit = 11;  // atlas/: rgb emitted radiance, front side
+const int kMaterialsUnit = 12;      // gpu_scene/: the scene's materials, a buffer texture
 
-// Image units of compute passes (one program at a time reads one image and writes another).
+// Image units of compute passes (one program at a time reads one image and writes another, or
+// several: units kImageDestinationUnit and up, at most 4 of them, GL 4.5 offering 8).
 const int kImageSourceUnit = 0;
 const int kImageDestinationUnit = 1;
 
 // Shader storage buffer bindings.
-const int kMaterialsBinding = 0;              // gpu_scene/: the scene's materials
 const int kTechniqueFirstStorageBinding = 1;  // 1..5: a technique's own buffers
 const int kTechniqueStorageBindingCount = 5;
 const int kTestFirstStorageBinding = 6;  // 6, 7: tests' query and result buffers
@@ -34,6 +35,7 @@ const int kTestFirstStorageBinding = 6;  // 6, 7: tests' query and result buffer
 const int kCameraBinding = 0;        // gpu_scene/: the camera block
 const int kLightSamplesBinding = 1;  // lighting/: the current batch of light samples
 const int kShadowFacesBinding = 2;   // lighting/: the layers a batch's shadow pass draws
+const int kGBufferViewsBinding = 3;  // gbuffer/: the views of one instanced G-buffer draw
 
 #ifdef __cplusplus
 }  // namespace gib::rt::gpu

@@ -91,6 +91,7 @@ Texture::Texture(GLenum target, GLenum format, int width, int height, int depth,
   GLuint name = 0;
   glCreateTextures(target, 1, &name);
   name_ = UniqueName<detail::deleteTexture>(name);
+  if (target == GL_TEXTURE_BUFFER) return;  // no sampling state: texelFetch only
   const bool filterable = levels > 1;
   glTextureParameteri(name, GL_TEXTURE_MIN_FILTER,
                       filterable ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
@@ -141,6 +142,20 @@ Texture Texture::makeCubeArray(GLenum format, int size, int cubes, int levels) {
   Texture t(GL_TEXTURE_CUBE_MAP_ARRAY, format, size, size, 6 * cubes, levels);
   glTextureStorage3D(t.id(), levels, format, size, size, 6 * cubes);
   t.checkAllocated();
+  return t;
+}
+
+Texture Texture::makeBuffer(GLenum format, const Buffer& buffer) {
+  int texel_bytes = 0;
+  if (format == GL_RGBA32F) texel_bytes = 16;
+  if (format == GL_RG32F) texel_bytes = 8;
+  if (format == GL_R32F) texel_bytes = 4;
+  if (texel_bytes == 0)
+    throw std::invalid_argument(fmt::format("buffer texture of format 0x{:x}", format));
+  GLint bytes = 0;
+  glGetNamedBufferParameteriv(buffer.id(), GL_BUFFER_SIZE, &bytes);
+  Texture t(GL_TEXTURE_BUFFER, format, bytes / texel_bytes, 1, 1, 1);
+  glTextureBuffer(t.id(), format, buffer.id());
   return t;
 }
 

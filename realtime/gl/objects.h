@@ -90,6 +90,10 @@ class Texture {
   static Texture make3D(GLenum format, int width, int height, int depth, int levels = 1);
   static Texture makeCube(GLenum format, int size, int levels = 1);
   static Texture makeCubeArray(GLenum format, int size, int cubes, int levels = 1);
+  // A buffer texture over `buffer` (its texels in `format`, e.g. GL_RGBA32F): what a shader reads
+  // with texelFetch(samplerBuffer, i). llvmpipe gathers texel fetches across a SIMD row, while it
+  // loads storage buffers lane by lane, so hot per-pixel reads of a buffer go through one.
+  static Texture makeBuffer(GLenum format, const Buffer& buffer);
 
   GLuint id() const { return name_.get(); }
   GLenum target() const { return target_; }

@@ -1,10 +1,13 @@
 #include "realtime/gl/shader_library.h"
 
+#include "realtime/gl/extensions.h"
+
 #include "realtime/gl/fault_injection.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <regex>
 
 namespace gib::rt::gl {
@@ -217,6 +220,27 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
     throw ShaderError(fmt::format("program ({}) does not link:\n{}", joined, log));
   }
   return program;
+}
+
+Program buildLayeredProgram(const LayeredStages& stages, std::string_view defines,
+                            bool geometry_only, InstanceTarget target) {
+  const bool layer = target == InstanceTarget::kLayer;
+  const std::array<const char*, 2> candidates = {
+      "GL_ARB_shader_viewport_layer_array",
+      layer ? "GL_AMD_vertex_shader_layer" : "GL_AMD_vertex_shader_viewport_index"};
+  std::string extension;
+  if (!geometry_only)
+    for (const char* name : candidates)
+      if (extension.empty() && hasExtension(name)) extension = name;
+  if (extension.empty())
+    return buildProgram({{GL_VERTEX_SHADER, stages.vertex},
+                         {GL_GEOMETRY_SHADER, stages.geometry},
+                         {GL_FRAGMENT_SHADER, stages.fragment}},
+                        defines);
+  return buildProgram({{GL_VERTEX_SHADER, stages.vertex}, {GL_FRAGMENT_SHADER, stages.fragment}},
+                      fmt::format("#extension {} : require\n#define {}_FROM_VERTEX_SHADER 1\n",
+                                  extension, layer ? "LAYER" : "VIEWPORT") +
+                          std::string(defines));
 }
 
 }  // namespace gib::rt::gl

@@ -79,4 +79,20 @@ std::string translateInfoLog(std::string_view log, const ExpandedSource& source)
 Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view defines = "",
                      const GlslLookup& lookup = glslFile);
 
+// A program whose instances each draw into their own layer of a layered framebuffer, or their own
+// viewport of the viewport array, the vertex shader naming which. Where the GL lets a vertex
+// shader write gl_Layer (ARB_shader_viewport_layer_array or AMD_vertex_shader_layer) or
+// gl_ViewportIndex (ARB_shader_viewport_layer_array or AMD_vertex_shader_viewport_index), the
+// vertex shader does, compiled with LAYER_FROM_VERTEX_SHADER or VIEWPORT_FROM_VERTEX_SHADER and
+// the extension enabled; else `geometry`, a pass-through geometry shader, does (it must take the
+// vertex shader's outputs and write the fragment shader's inputs). `geometry_only` takes the
+// geometry shader anyway (tests compare the two paths).
+struct LayeredStages {
+  std::string vertex, geometry, fragment;
+};
+enum class InstanceTarget { kLayer, kViewport };
+Program buildLayeredProgram(const LayeredStages& stages, std::string_view defines,
+                            bool geometry_only = false,
+                            InstanceTarget target = InstanceTarget::kLayer);
+
 }  // namespace gib::rt::gl

@@ -179,13 +179,14 @@ GpuScene::GpuScene(const scene::Scene& scene, int width, int height)
   vertex_count_ = vertices.size();
   vertices_ = gl::Buffer::fromVector(vertices, 0);
   materials_ = gl::Buffer::fromVector(gpuMaterials(scene), 0);
+  material_texels_ = gl::Texture::makeBuffer(GL_RGBA32F, materials_);
   const gpu::Camera block = cameraBlock(camera_, width, height);
   camera_block_ = gl::Buffer(sizeof(block), &block, 0);
   setSceneVertexAttributes<Vertex>(vertex_array_, vertices_);
 }
 
 void GpuScene::bindSceneBuffers() const {
-  materials_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kMaterialsBinding);
+  material_texels_.bind(gpu::kMaterialsUnit);
   camera_block_.bindBase(GL_UNIFORM_BUFFER, gpu::kCameraBinding);
 }
 

@@ -72,7 +72,7 @@ class GpuScene {
   const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
   std::size_t vertexCount() const { return vertex_count_; }
 
-  // Binds the material buffer and the camera block to their bindings.
+  // Binds the materials (a buffer texture) and the camera block to their unit and binding.
   void bindSceneBuffers() const;
   // Draws every triangle with the scene's vertex attributes (the caller has bound a program);
   // `instances` times in one command (gl_InstanceID tells them apart: layered rendering).
@@ -86,6 +86,7 @@ class GpuScene {
   std::vector<EmitterTriangle> emitters_;
   std::size_t vertex_count_ = 0;
   gl::Buffer vertices_, materials_, camera_block_;
+  gl::Texture material_texels_;  // materials_ as the buffer texture shaders read
   gl::VertexArray vertex_array_;
 };
 

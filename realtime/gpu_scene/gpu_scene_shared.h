@@ -1,5 +1,5 @@
 // The scene as GpuScene uploads it and shaders read it (gpu_scene/scene.glsl, vertex.glsl): the
-// material record of the storage buffer, the camera uniform block and the vertex attributes.
+// material record of the materials buffer, the camera uniform block and the vertex attributes.
 #pragma once
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/host_device_shared.h"
@@ -11,7 +11,11 @@ namespace gib::rt::gpu {
 const int kMaterialLambert = 0;
 const int kMaterialPhong = 1;
 
-// std430, binding kMaterialsBinding.
+// One record per material in a buffer that shaders read as a buffer texture (RGBA32F, unit
+// kMaterialsUnit): material m is texels kMaterialTexels·m + 0, 1, 2. A buffer texture, not a
+// storage buffer, because every shading pass reads it per pixel and llvmpipe gathers texel
+// fetches across a SIMD row but loads storage buffers lane by lane.
+const int kMaterialTexels = 3;
 struct Material {
   vec4 diffuse_type;       // rgb diffuse reflectance, w: kMaterialLambert or kMaterialPhong
   vec4 specular_exponent;  // rgb specular reflectance, w: Phong exponent n

@@ -36,7 +36,12 @@ GIB_SHARED_FUNCTION vec4 pointSampleIrradiance(GpuLightSample s, vec3 p) {
   vec3 wi = to_light * inversesqrt(distance_squared);
   float cos_axis = dot(-wi, vec3(s.axis));
   if (cos_axis < s.axis.w) return vec4(0.0f);
-  float falloff = s.intensity.w == 0.0f ? 1.0f : pow(max(cos_axis, 0.0f), s.intensity.w);
+  // Lambertian emitters' points (exponent 1) and uniform spots (0) skip the power.
+  float falloff = 1.0f;
+  if (s.intensity.w == 1.0f)
+    falloff = cos_axis;
+  else if (s.intensity.w != 0.0f)
+    falloff = pow(max(cos_axis, 0.0f), s.intensity.w);
   // position.w: 0 for a light that is a point; a virtual light that stands for a patch (light
   // path maps) gives the patch's area over π, which keeps its irradiance on a receiver beside it
   // finite (the on-axis irradiance of a disk of that area).
@@ -48,8 +53,21 @@ GIB_SHARED_FUNCTION vec4 pointSampleIrradiance(GpuLightSample s, vec3 p) {
 const int kMaxShadowFaces = 6 * kMaxLightBatch;
 struct ShadowFace {
   mat4 view_projection;  // world to the face's clip space
-  ivec4 layer_slot;      // x: layer (cube maps: 6·slot + face), y: the sample's slot in the batch
+  // x: layer (cube maps: 6·slot + face), y: the sample's slot in the batch; z, w: the texel
+  // columns and rows outside which the face holds nothing but the cleared value (what lies
+  // behind a point sample's plane is not drawn), packed by packTexelRange; the variance filter
+  // works inside them.
+  ivec4 layer_slot;
 };
+
+// A half-open range of texels [first, end) in one int: first in the low 16 bits, end in the
+// high ones (maps are at most 4096 texels a side).
+GIB_SHARED_FUNCTION int packTexelRange(int first, int end) {
+  return first | (end << 16);
+}
+GIB_SHARED_FUNCTION ivec2 unpackTexelRange(int range) {
+  return ivec2(range & 0xffff, range >> 16);
+}
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuLightSample) == 112, "std140: three vec4 and a mat4");

@@ -8,8 +8,10 @@
 namespace gib::rt::gpu {
 #endif
 
-// Work group side of vsm_blur.comp.glsl (square groups; cube maps add one layer per face).
-const int kVsmBlurGroupSize = 8;
+// vsm_blur.comp.glsl: invocations per work group (neighbouring lines), and texels each invocation
+// filters along its line.
+const int kVsmBlurGroupSize = 64;
+const int kVsmBlurSegment = 64;
 
 #ifdef __cplusplus
 }  // namespace gib::rt::gpu

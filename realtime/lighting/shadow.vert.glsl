@@ -4,7 +4,7 @@
 // AMD_vertex_shader_layer), else by shadow.geom.glsl.
 #include "realtime/gpu_scene/vertex.glsl"
 #include "realtime/gl/binding_plan_shared.h"
-#include "realtime/lighting/light_sample_shared.h"
+#include "realtime/lighting/light_space.glsl"
 
 layout(std140, binding = kShadowFacesBinding) uniform ShadowFaceBlock {
   ShadowFace u_shadow_faces[kMaxShadowFaces];
@@ -21,6 +21,15 @@ flat out int g_layer;
 void main() {
   ivec4 layer_slot = u_shadow_faces[gl_InstanceID].layer_slot;
   gl_Position = u_shadow_faces[gl_InstanceID].view_projection * vec4(vertex_position, 1.0);
+  // A point sample whose cone is at most a hemisphere lights nothing behind the plane through it
+  // across its axis, and no lit point's shadow ray crosses that plane: what lies behind is not
+  // drawn (half of each side face of a cube around a point on an area light).
+  gl_ClipDistance[0] = 1.0;
+#ifdef POINT_LIGHT
+  GpuLightSample light = u_light_samples[layer_slot.y];
+  if (light.axis.w >= 0.0)
+    gl_ClipDistance[0] = dot(vertex_position - light.position.xyz, light.axis.xyz);
+#endif
 #ifdef LAYER_FROM_VERTEX_SHADER
   v_world = vertex_position;
   v_slot = layer_slot.y;

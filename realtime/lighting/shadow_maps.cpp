@@ -1,7 +1,6 @@
 #include "realtime/lighting/shadow_maps.h"
 
 #include "realtime/cube_faces.h"
-#include "realtime/gl/extensions.h"
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
@@ -42,6 +41,45 @@ void setupDepthTexture(gl::Texture& texture, bool compare_filtered) {
   texture.setDepthCompare(true);
   const GLenum filter = compare_filtered ? GL_LINEAR : GL_NEAREST;
   texture.setFilter(filter, filter);
+}
+
+// The texels of cube face `face` around point sample `sample` that can hold anything drawn, as
+// packed column and row ranges (ShadowFace::layer_slot.zw): all of them, or, where the shadow
+// pass clips what lies behind the sample's plane (shadow.vert.glsl: a cone of at most a
+// hemisphere), the bounding box of the part of the face in front of the plane, widened by
+// `margin` texels. The face's normalised coordinates (u, v) look along u·s + v·t + f (the axes
+// glm::lookAt builds from the face's axis f and up vector), which is in front when
+// u·(s·a) + v·(t·a) + f·a ≥ 0 for the sample's axis a.
+glm::ivec2 drawnTexels(const LightSample& sample, int face, int size, int margin) {
+  const int everything = gpu::packTexelRange(0, size);
+  if (sample.cos_cone < 0.0f) return {everything, everything};
+  const glm::vec3 f = kCubeFaceAxis[face];
+  const glm::vec3 s = glm::normalize(glm::cross(f, kCubeFaceUp[face]));
+  const glm::vec3 t = glm::cross(s, f);
+  const glm::vec3 a = glm::normalize(sample.axis);
+  auto front = [&](glm::vec2 p) {
+    return p.x * glm::dot(s, a) + p.y * glm::dot(t, a) + glm::dot(f, a);
+  };
+  // The face's square clipped by the half-plane front ≥ 0: its corners in front, and where an
+  // edge crosses the line.
+  const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  glm::vec2 lo(2.0f), hi(-2.0f);
+  for (int i = 0; i < 4; ++i) {
+    const glm::vec2 p = corners[i], q = corners[(i + 1) % 4];
+    const float fp = front(p), fq = front(q);
+    if (fp >= 0.0f) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    if ((fp < 0.0f) != (fq < 0.0f)) {
+      const glm::vec2 crossing = p + (q - p) * (fp / (fp - fq));
+      lo = glm::min(lo, crossing), hi = glm::max(hi, crossing);
+    }
+  }
+  if (lo.x > hi.x) return {gpu::packTexelRange(0, 0), gpu::packTexelRange(0, 0)};  // none
+  auto range = [&](float low, float high) {
+    const int first = int(std::floor((low + 1.0f) * 0.5f * float(size))) - margin;
+    const int end = int(std::ceil((high + 1.0f) * 0.5f * float(size))) + margin;
+    return gpu::packTexelRange(std::clamp(first, 0, size), std::clamp(end, 0, size));
+  };
+  return {range(lo.x, hi.x), range(lo.y, hi.y)};
 }
 
 }  // namespace
@@ -100,25 +138,10 @@ ShadowMaps::Layers& ShadowMaps::layers(LightSampleKind kind) {
   if (maps.framebuffer) return maps;
   const bool variance = settings_.filter == ShadowFilter::kVariance;
   const std::string defines = kindDefines(kind, variance);
-  // Layer selection in the vertex shader where the GL has it, else a pass-through geometry shader.
-  std::string layer_extension;
-  if (!settings_.layer_from_geometry_shader)
-    for (const char* name : {"GL_ARB_shader_viewport_layer_array", "GL_AMD_vertex_shader_layer"})
-      if (layer_extension.empty() && gl::hasExtension(name)) layer_extension = name;
-  if (layer_extension.empty()) {
-    maps.depth_program =
-        gl::buildProgram({{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
-                          {GL_GEOMETRY_SHADER, "realtime/lighting/shadow.geom.glsl"},
-                          {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
-                         defines);
-  } else {
-    maps.depth_program = gl::buildProgram(
-        {{GL_VERTEX_SHADER, "realtime/lighting/shadow.vert.glsl"},
-         {GL_FRAGMENT_SHADER, "realtime/lighting/shadow.frag.glsl"}},
-        fmt::format("#extension {} : require\n#define LAYER_FROM_VERTEX_SHADER 1\n",
-                    layer_extension) +
-            defines);
-  }
+  maps.depth_program = gl::buildLayeredProgram(
+      {"realtime/lighting/shadow.vert.glsl", "realtime/lighting/shadow.geom.glsl",
+       "realtime/lighting/shadow.frag.glsl"},
+      defines, settings_.layer_from_geometry_shader);
   const int n = settings_.size;
   auto make = [&](GLenum format) {
     return cube ? gl::Texture::makeCubeArray(format, n, capacity_)
@@ -126,8 +149,9 @@ ShadowMaps::Layers& ShadowMaps::layers(LightSampleKind kind) {
   };
   maps.depth = make(GL_DEPTH_COMPONENT32F);
   if (variance) {
-    maps.blur_program =
-        gl::buildProgram({{GL_COMPUTE_SHADER, "realtime/lighting/vsm_blur.comp.glsl"}}, defines);
+    maps.blur_program = gl::buildProgram(
+        {{GL_COMPUTE_SHADER, "realtime/lighting/vsm_blur.comp.glsl"}},
+        defines + fmt::format("#define VSM_BLUR_RADIUS {}\n", settings_.blur_radius));
     maps.moments = make(GL_RG32F);
     maps.scratch = make(GL_RG32F);
   } else {
@@ -178,7 +202,9 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
   for (int slot = 0; slot < batch_size_; ++slot) {
     const LightSample& sample = batch[std::size_t(slot)];
     if (kind != LightSampleKind::kPoint) {
-      faces.push_back({records[std::size_t(slot)].view_projection, glm::ivec4(slot, slot, 0, 0)});
+      const int everything = gpu::packTexelRange(0, settings_.size);
+      faces.push_back({records[std::size_t(slot)].view_projection,
+                       glm::ivec4(slot, slot, everything, everything)});
       continue;
     }
     const float cone = std::acos(std::clamp(sample.cos_cone, -1.0f, 1.0f));
@@ -186,8 +212,9 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
       const float angle =
           std::acos(std::clamp(glm::dot(kCubeFaceAxis[face], sample.axis), -1.0f, 1.0f));
       if (angle >= cone + kFaceHalfDiagonal) continue;  // the sample sends no light this way
+      const glm::ivec2 drawn = drawnTexels(sample, face, settings_.size, settings_.blur_radius + 1);
       faces.push_back({cubeFaceViewProjection(sample.position, face, near_, far_),
-                       glm::ivec4(6 * slot + face, slot, 0, 0)});
+                       glm::ivec4(6 * slot + face, slot, drawn.x, drawn.y)});
     }
   }
   faces_.update(0, faces.size() * sizeof(gpu::ShadowFace), faces.data());
@@ -212,23 +239,26 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
     maps.framebuffer->bind();
     maps.depth_program.use();
     glUniform1f(maps.depth_program.uniform("u_far"), far_);
+    glEnable(GL_CLIP_DISTANCE0);  // behind a point sample's plane (shadow.vert.glsl)
     scene.draw(int(faces.size()));
+    glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
-  if (settings_.filter == ShadowFilter::kVariance) blur(kind, batch_size_, profiler);
+  if (settings_.filter == ShadowFilter::kVariance) blur(kind, int(faces.size()), profiler);
 }
 
-void ShadowMaps::blur(LightSampleKind kind, int count, gl::PassProfiler& profiler) {
+void ShadowMaps::blur(LightSampleKind kind, int face_count, gl::PassProfiler& profiler) {
   auto pass = profiler.pass(kShadowMapFilterPass);
   Layers& maps = layers(kind);
   const gl::Program& program = maps.blur_program;
   program.use();
-  glUniform1i(program.uniform("u_radius"), settings_.blur_radius);
-  glUniform1i(program.uniform("u_size"), settings_.size);
-  const GLuint groups =
+  // Work groups: lines of the layer, segments along them, and the faces the shadow pass drew
+  // (its face list is still bound: the layers the others are cleared to stay as they are).
+  const GLuint lines =
       GLuint((settings_.size + gpu::kVsmBlurGroupSize - 1) / gpu::kVsmBlurGroupSize);
-  const GLuint layer_count = GLuint(kind == LightSampleKind::kPoint ? 6 * count : count);
-  // Horizontal into the scratch maps, then vertical back, every layer of the batch at once.
+  const GLuint segments =
+      GLuint((settings_.size + gpu::kVsmBlurSegment - 1) / gpu::kVsmBlurSegment);
+  // Along rows into the scratch maps, then along columns back.
   const gl::Texture* source[2] = {&maps.moments, &maps.scratch};
   const gl::Texture* destination[2] = {&maps.scratch, &maps.moments};
   const int steps[2][2] = {{1, 0}, {0, 1}};
@@ -238,7 +268,7 @@ void ShadowMaps::blur(LightSampleKind kind, int count, gl::PassProfiler& profile
     glBindImageTexture(gpu::kImageDestinationUnit, destination[i]->id(), 0, GL_TRUE, 0,
                        GL_WRITE_ONLY, GL_RG32F);
     glUniform2i(program.uniform("u_step"), steps[i][0], steps[i][1]);
-    gl::dispatchCompute(groups, groups, layer_count);
+    gl::dispatchCompute(lines, segments, GLuint(face_count));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
 }
@@ -259,10 +289,13 @@ void ShadowMaps::setLookupConstants(const gl::Program& program) const {
   set1f("u_min_variance", settings_.min_variance);
 }
 
-void ShadowMaps::bindForLookup(const gl::Program& program) const {
+const gl::Texture& ShadowMaps::lookupMaps() const {
   const Layers& maps = batch_kind_ == LightSampleKind::kPoint ? cube_ : flat_;
-  (settings_.filter == ShadowFilter::kVariance ? maps.moments : maps.depth)
-      .bind(gpu::kShadowMapUnit);
+  return settings_.filter == ShadowFilter::kVariance ? maps.moments : maps.depth;
+}
+
+void ShadowMaps::bindForLookup(const gl::Program& program) const {
+  lookupMaps().bind(gpu::kShadowMapUnit);
   samples_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding);
   glProgramUniform1i(program.id(), program.uniform("u_light_sample_count"), batch_size_);
 }

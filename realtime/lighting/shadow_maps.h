@@ -75,6 +75,9 @@ class ShadowMaps {
   // sample count of `program`, which must be the variant for the batch's kind.
   void bindForLookup(const gl::Program& program) const;
   LightSampleKind batchKind() const { return batch_kind_; }
+  // The last batch's maps as lookups read them: depth, or the filtered moments of a variance
+  // shadow map (layers 6k..6k+5 the cube of sample k; k for a directional one).
+  const gl::Texture& lookupMaps() const;
 
   // The GLSL defines of this filter, for programs that read the maps.
   std::string defines(LightSampleKind kind) const;
@@ -87,7 +90,8 @@ class ShadowMaps {
     gl::Program depth_program, blur_program;
   };
   Layers& layers(LightSampleKind kind);
-  void blur(LightSampleKind kind, int count, gl::PassProfiler& profiler);
+  // Filters the `face_count` faces the last shadow pass drew (its face list bound).
+  void blur(LightSampleKind kind, int face_count, gl::PassProfiler& profiler);
   glm::mat4 flatViewProjection(const LightSample& sample) const;
 
   ShadowSettings settings_;

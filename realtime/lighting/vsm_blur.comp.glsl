@@ -1,9 +1,17 @@
 // One direction of the separable box filter over a batch's variance shadow maps (the book's 5×5
-// texel filter, §4.1.3, Fig. 4.5), every layer in one dispatch. Cube maps are filtered face by
-// face; taps clamp at face edges.
+// texel filter, §4.1.3, Fig. 4.5), every drawn layer in one dispatch (work group z: the z-th
+// face of the batch's shadow pass; the faces a sample cannot light stay cleared). Cube maps are
+// filtered face by face; taps clamp at face edges.
+//
+// Each invocation filters a segment of kVsmBlurSegment texels along one line (a row, or a column)
+// and keeps the window's 2r+1 taps in registers, so a texel is loaded once, not 2r+1 times; the
+// window is summed afresh for every texel in the order of a direct sum (no running sum, which
+// would carry the cleared maps' huge moments into their neighbours as rounding error).
+// VSM_BLUR_RADIUS (r) is compiled in, so the window's loops unroll into registers.
 #include "realtime/lighting/lighting_shared.h"
+#include "realtime/lighting/light_sample_shared.h"
 
-layout(local_size_x = kVsmBlurGroupSize, local_size_y = kVsmBlurGroupSize, local_size_z = 1) in;
+layout(local_size_x = kVsmBlurGroupSize, local_size_y = 1, local_size_z = 1) in;
 #ifdef POINT_LIGHT
 layout(rg32f, binding = kImageSourceUnit) uniform readonly imageCubeArray u_source;
 layout(rg32f, binding = kImageDestinationUnit) uniform writeonly imageCubeArray u_destination;
@@ -11,16 +19,37 @@ layout(rg32f, binding = kImageDestinationUnit) uniform writeonly imageCubeArray 
 layout(rg32f, binding = kImageSourceUnit) uniform readonly image2DArray u_source;
 layout(rg32f, binding = kImageDestinationUnit) uniform writeonly image2DArray u_destination;
 #endif
-#define COORD(xy) ivec3(xy, int(gl_GlobalInvocationID.z))
-uniform ivec2 u_step;  // (1,0) then (0,1)
-uniform int u_radius;  // 2 for the 5-texel box
-uniform int u_size;
+layout(std140, binding = kShadowFacesBinding) uniform ShadowFaceBlock {
+  ShadowFace u_shadow_faces[kMaxShadowFaces];
+};
+uniform ivec2 u_step;  // (1,0): along rows, then (0,1): along columns
+
+const int kWidth = 2 * VSM_BLUR_RADIUS + 1;
 
 void main() {
-  ivec2 xy = ivec2(gl_GlobalInvocationID.xy);
-  if (xy.x >= u_size || xy.y >= u_size) return;
-  vec2 sum = vec2(0.0);
-  for (int k = -u_radius; k <= u_radius; ++k)
-    sum += imageLoad(u_source, COORD(clamp(xy + k * u_step, ivec2(0), ivec2(u_size - 1)))).rg;
-  imageStore(u_destination, COORD(xy), vec4(sum / float(2 * u_radius + 1), 0.0, 0.0));
+  ShadowFace face = u_shadow_faces[gl_WorkGroupID.z];
+  int layer = face.layer_slot.x;
+  // Only the texels that can hold anything drawn, and the filter's reach around them: outside
+  // them both passes would write back the cleared value they hold (a box mean of equal values),
+  // and taps clamp to the range, which ends in cleared texels too.
+  ivec2 columns = unpackTexelRange(face.layer_slot.z), rows = unpackTexelRange(face.layer_slot.w);
+  ivec2 along = u_step.x == 1 ? columns : rows, across_range = u_step.x == 1 ? rows : columns;
+  int line = across_range.x + int(gl_GlobalInvocationID.x);
+  if (line >= across_range.y) return;
+  ivec2 across = ivec2(1) - u_step;
+  int begin = along.x + int(gl_WorkGroupID.y) * kVsmBlurSegment;
+  int end = min(begin + kVsmBlurSegment, along.y);
+  if (begin >= end) return;
+#define TAP(i) imageLoad(u_source, ivec3(u_step * clamp(i, along.x, along.y - 1) + across * line, layer)).rg
+  vec2 window[kWidth];  // the taps t − r .. t + r of texel t
+  for (int k = 1; k < kWidth; ++k) window[k] = TAP(begin - VSM_BLUR_RADIUS + k - 1);
+  for (int t = begin; t < end; ++t) {
+    for (int k = 0; k < kWidth - 1; ++k) window[k] = window[k + 1];
+    window[kWidth - 1] = TAP(t + VSM_BLUR_RADIUS);
+    vec2 sum = vec2(0.0);
+    for (int k = 0; k < kWidth; ++k) sum += window[k];
+    imageStore(u_destination, ivec3(u_step * t + across * line, layer),
+               vec4(sum / float(kWidth), 0.0, 0.0));
+  }
+#undef TAP
 }

@@ -1,6 +1,7 @@
 #include "realtime/gpu_scene/gpu_scene.h"
 
 #include "realtime/gbuffer/gbuffer.h"
+#include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/objects.h"
 #include "realtime/gl/shader_library.h"
 #include "scene/builtin_scenes.h"
@@ -12,6 +13,8 @@
 #include <glm/vec4.hpp>
 
 #include <array>
+#include <string>
+#include <vector>
 
 namespace gib::rt {
 namespace {
@@ -116,6 +119,46 @@ TEST_F(GlTest, ASceneWithoutMeshesUploadsAndDrawsNothing) {
     for (int x = 0; x < normal.width(); ++x) ASSERT_EQ(normal.pixel(x, y)[3], -1.0f);
 }
 
+// Every material of a scene reads back through scene.glsl's accessors (the materials buffer as a
+// buffer texture, kMaterialTexels texels per record) with the scene's values, field by field.
+TEST_F(GlTest, MaterialAccessorsReadEachMaterialsOwnFields) {
+  const scene::Scene cornell = scene::loadScene("cornell");
+  ASSERT_GE(cornell.materials.size(), 3u);
+  const GpuScene gpu(cornell, 64, 48);
+  const std::string source =
+      "#include \"realtime/gpu_scene/scene.glsl\"\n"
+      "layout(local_size_x = 1) in;\n"
+      "layout(std430, binding = kTestFirstStorageBinding) buffer Out { vec4 o[]; };\n"
+      "void main() {\n"
+      "  uint m = gl_WorkGroupID.x;\n"
+      "  o[3u * m] = vec4(materialDiffuse(m), materialIsPhong(m) ? 1.0 : 0.0);\n"
+      "  o[3u * m + 1u] = vec4(materialSpecular(m), materialExponent(m));\n"
+      "  o[3u * m + 2u] = vec4(materialEmission(m), 0.0);\n"
+      "}\n";
+  const gl::Program program = gl::buildProgram(
+      {{GL_COMPUTE_SHADER, "test/materials.comp.glsl"}}, "",
+      [&](std::string_view path) -> std::string_view {
+        return path == "test/materials.comp.glsl" ? std::string_view(source) : gl::glslFile(path);
+      });
+  std::vector<glm::vec4> out(3 * cornell.materials.size(), glm::vec4(-7.0f));
+  const gl::Buffer buffer = gl::Buffer::fromVector(out);
+  buffer.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTestFirstStorageBinding);
+  gpu.bindSceneBuffers();
+  program.use();
+  glDispatchCompute(GLuint(cornell.materials.size()), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(out.size() * sizeof(glm::vec4)), out.data());
+  for (std::size_t m = 0; m < cornell.materials.size(); ++m) {
+    const scene::Material& material = cornell.materials[m];
+    const bool phong = material.type == scene::MaterialType::kPhong;
+    EXPECT_EQ(out[3 * m], glm::vec4(material.diffuse, phong ? 1.0f : 0.0f)) << material.name;
+    if (phong) {
+      EXPECT_EQ(out[3 * m + 1], glm::vec4(material.specular, material.exponent)) << material.name;
+    }
+    EXPECT_EQ(glm::vec3(out[3 * m + 2]), material.emission) << material.name;
+  }
+}
+
 // scene.glsl takes its bindings from gpu_scene_shared.h: the program the driver built must report
 // the C++ values, so the shared header reaches GLSL intact.
 TEST_F(GlTest, SceneGlslBindingsAreTheCppOnes) {
@@ -130,7 +173,9 @@ TEST_F(GlTest, SceneGlslBindingsAreTheCppOnes) {
     glGetProgramResourceiv(program.id(), interface, index, 1, &property, 1, nullptr, &value);
     return GLuint(value);
   };
-  EXPECT_EQ(binding(GL_SHADER_STORAGE_BLOCK, "Materials"), GLuint(gpu::kMaterialsBinding));
+  GLint materials_unit = -1;
+  glGetUniformiv(program.id(), program.uniform("u_materials"), &materials_unit);
+  EXPECT_EQ(materials_unit, gpu::kMaterialsUnit);
   EXPECT_EQ(binding(GL_UNIFORM_BLOCK, "CameraBlock"), GLuint(gpu::kCameraBinding));
 }
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 namespace gib::rt::gl {
 namespace {
 
@@ -183,6 +185,37 @@ TEST_F(ShaderBuild, ALinkErrorNamesTheStages) {
                                         {GL_FRAGMENT_SHADER, "test/no_main.frag.glsl"}});
   EXPECT_TRUE(contains(error, "does not link")) << error;
   EXPECT_TRUE(contains(error, "test/no_main.frag.glsl")) << error;
+}
+
+// Every layered program of the project builds on both paths of buildLayeredProgram: the vertex
+// shader writing gl_Layer (llvmpipe has the extension) and the pass-through geometry shader of
+// drivers without it, whose inputs and outputs must match the stages around it.
+TEST_F(ShaderBuild, LayeredProgramsBuildWithAndWithoutVertexShaderLayers) {
+  const LayeredStages shadow = {"realtime/lighting/shadow.vert.glsl",
+                                "realtime/lighting/shadow.geom.glsl",
+                                "realtime/lighting/shadow.frag.glsl"};
+  const LayeredStages visibility = {
+      "realtime/techniques/stochastic_radiosity/visibility.vert.glsl",
+      "realtime/techniques/stochastic_radiosity/visibility.geom.glsl",
+      "realtime/techniques/stochastic_radiosity/visibility.frag.glsl"};
+  const std::pair<const LayeredStages*, const char*> programs[] = {
+      {&shadow, "#define POINT_LIGHT 1\n"},
+      {&shadow, "#define POINT_LIGHT 1\n#define VARIANCE_SHADOW_MAP 1\n"},
+      {&shadow, ""},
+      {&visibility, "#define HEMICUBE\n"},
+      {&visibility, ""}};
+  for (const auto& [stages, defines] : programs)
+    for (const bool geometry_only : {false, true}) {
+      const Program program = buildLayeredProgram(*stages, defines, geometry_only);
+      GLint linked = 0;
+      glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+      EXPECT_TRUE(linked) << stages->vertex << " " << defines << " " << geometry_only;
+      GLint shaders = 0;
+      glGetProgramiv(program.id(), GL_ATTACHED_SHADERS, &shaders);
+      if (geometry_only) {
+        EXPECT_EQ(shaders, 3) << "the geometry shader path";
+      }
+    }
 }
 
 }  // namespace

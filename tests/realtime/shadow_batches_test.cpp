@@ -171,6 +171,61 @@ TEST_F(ShadowBatches, DirectionalLightsAndSkyGiveTheImageOfPerSamplePasses) {
   EXPECT_LT(largestRelativeDifference(batched, fives), 1e-5);
 }
 
+// The variance shadow map's filter (vsm_blur.comp.glsl: a segment of each line per invocation,
+// its window in registers) gives each texel of a drawn face the (2r+1)² box mean of the
+// unfiltered moments, taps clamped at the face's edges; a face the sample cannot light is not
+// filtered and keeps its cleared moments. A spot light under the ceiling of a box, its 60° cone
+// downwards: five faces drawn, the upward one not.
+TEST_F(ShadowBatches, VarianceFilterIsTheBoxMeanOfEachDrawnFace) {
+  const scene::Scene scene = boxOfOccludedLights();
+  GpuScene gpu(scene, 16, 16);
+  LightSample spot;
+  spot.position = {0.1f, 1.2f, -0.3f};
+  spot.axis = {0.0f, -1.0f, 0.0f};
+  spot.intensity = scene::Rgb(1.0f);
+  spot.cos_cone = 0.5f;
+  constexpr int kSize = 64, kRadius = 2;
+  auto moments = [&](int radius) {
+    ShadowSettings settings;
+    settings.filter = ShadowFilter::kVariance;
+    settings.size = kSize;
+    settings.blur_radius = radius;
+    ShadowMaps maps(settings, gpu, 1);
+    gl::PassProfiler profiler;
+    maps.render(gpu, std::span<const LightSample>(&spot, 1), profiler);
+    std::vector<glm::vec2> texels(6 * kSize * kSize);
+    glGetTextureImage(maps.lookupMaps().id(), 0, GL_RG, GL_FLOAT,
+                      GLsizei(texels.size() * sizeof(glm::vec2)), texels.data());
+    return texels;
+  };
+  const std::vector<glm::vec2> raw = moments(0), filtered = moments(kRadius);
+  const int kUpFace = 2;  // +y
+  int shadowed_texels = 0;
+  for (int face = 0; face < 6; ++face)
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        auto at = [&](const std::vector<glm::vec2>& t, int i, int j) {
+          return t[std::size_t((face * kSize + std::clamp(j, 0, kSize - 1)) * kSize +
+                               std::clamp(i, 0, kSize - 1))];
+        };
+        const glm::vec2 got = at(filtered, x, y);
+        if (face == kUpFace) {
+          ASSERT_EQ(got, glm::vec2(1e4f, 1e8f)) << "the unlit face stays cleared";
+          continue;
+        }
+        glm::vec2 mean(0.0f);
+        for (int j = -kRadius; j <= kRadius; ++j)
+          for (int i = -kRadius; i <= kRadius; ++i) mean += at(raw, x + i, y + j);
+        mean /= float((2 * kRadius + 1) * (2 * kRadius + 1));
+        ASSERT_NEAR(got.x, mean.x, 1e-5f * std::max(1.0f, std::abs(mean.x)))
+            << "face " << face << " texel " << x << "," << y;
+        ASSERT_NEAR(got.y, mean.y, 1e-5f * std::max(1.0f, std::abs(mean.y)))
+            << "face " << face << " texel " << x << "," << y;
+        if (at(raw, x, y).x < 1.0f) ++shadowed_texels;
+      }
+  EXPECT_GT(shadowed_texels, 5 * kSize * kSize / 4);  // the drawn faces saw walls
+}
+
 TEST(LightSampleBatches, BatchesHoldOneKindAndAtMostTheCapacityInOrder) {
   std::vector<LightSample> samples(7);
   for (std::size_t i = 0; i < samples.size(); ++i) {

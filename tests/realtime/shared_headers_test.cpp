@@ -2,6 +2,7 @@
 // all of them compile together on both sides (one namespace in C++, one global scope in GLSL, so
 // a clash fails here), and the constants and functions the GPU evaluates equal the C++ ones.
 #include "common/luminance_shared.h"
+#include "realtime/gbuffer/gbuffer_views_shared.h"
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/gpu_scene/brdf_shared.h"
@@ -45,6 +46,7 @@ TEST(SharedHeaderFiles, TheCppIncludesAboveAreEveryEmbeddedOne) {
   // This file includes each by hand (C++ has no glob): a new header goes above and here.
   const std::set<std::string> included = {
       "common/luminance_shared.h",
+      "realtime/gbuffer/gbuffer_views_shared.h",
       "realtime/gl/binding_plan_shared.h",
       "realtime/gl/host_device_shared.h",
       "realtime/gpu_scene/brdf_shared.h",
@@ -98,20 +100,25 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"kGBufferNormalUnit", kGBufferNormalUnit},
       {"kShadowMapUnit", kShadowMapUnit},
       {"kAtlasEmissionUnit", kAtlasEmissionUnit},
-      {"kMaterialsBinding", kMaterialsBinding},
+      {"kMaterialsUnit", kMaterialsUnit},
+      {"kMaterialTexels", kMaterialTexels},
       {"kCameraBinding", kCameraBinding},
       {"kLightSamplesBinding", kLightSamplesBinding},
       {"kShadowFacesBinding", kShadowFacesBinding},
+      {"kGBufferViewsBinding", kGBufferViewsBinding},
+      {"kMaxGBufferViewsPerDraw", kMaxGBufferViewsPerDraw},
       {"kMaxLightBatch", kMaxLightBatch},
       {"kMaxShadowFaces", kMaxShadowFaces},
       {"kMaterialPhong", kMaterialPhong},
       {"kVertexAtlasUvLocation", kVertexAtlasUvLocation},
       {"kVsmBlurGroupSize", kVsmBlurGroupSize},
+      {"kVsmBlurSegment", kVsmBlurSegment},
       {"kShMaxCoefficients", kShMaxCoefficients},
       {"shCoefficientCount(1)", shCoefficientCount(1)},
       {"shBand(8)", shBand(8)},
       {"shBand(9)", shBand(9)},
       {"kProbeCoefficientsBinding", kProbeCoefficientsBinding},
+      {"kProbeCoefficientsUnit", kProbeCoefficientsUnit},
       {"kProjectionWeightsBinding", kProjectionWeightsBinding},
       {"probeCoefficientIndex(3, 5)", probeCoefficientIndex(3, 5)},
       {"probeTile(7, 4)", probeTile(7, 4)},
@@ -119,6 +126,8 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"tileOrigin(probeTile(7, 4), 9, 16).y", tileOrigin(probeTile(7, 4), 9, 16).y},
       {"kShootersBinding", kShootersBinding},
       {"kVisibilityUnit", kVisibilityUnit},
+      {"kRadiosityPowerUnit", kRadiosityPowerUnit},
+      {"kPyramidLevelsPerPass", kPyramidLevelsPerPass},
       {"kDescentGroupSize", kDescentGroupSize},
       {"kSelectedPanesBinding", kSelectedPanesBinding},
       {"kPanesUnit", kPanesUnit},
@@ -230,8 +239,8 @@ TEST_F(SharedHeaders, SharedStructsHaveTheCppLayoutInTheDriver) {
       "#include \"realtime/techniques/stochastic_radiosity/selection.glsl\"\n"
       "layout(local_size_x = 1) in;\n"
       "void main() {\n"
-      "  shooters[0].u = materials[0].emission.x + camera.position.x + camera.image_size.y;\n"
-      "  shooters[1].power = materials[1].specular_exponent.w;\n"
+      "  shooters[0].u = camera.position.x + camera.image_size.y;\n"
+      "  shooters[1].power = 1.0;\n"
       "}\n";
   const gl::Program program = layoutProgram(source);
   auto property = [&](GLenum interface, const char* name, GLenum what) {
@@ -240,27 +249,26 @@ TEST_F(SharedHeaders, SharedStructsHaveTheCppLayoutInTheDriver) {
   EXPECT_EQ(property(GL_BUFFER_VARIABLE, "shooters[0].u", GL_OFFSET), offsetof(gpu::Shooter, u));
   EXPECT_EQ(property(GL_BUFFER_VARIABLE, "shooters[0].power", GL_TOP_LEVEL_ARRAY_STRIDE),
             sizeof(gpu::Shooter));
-  EXPECT_EQ(property(GL_BUFFER_VARIABLE, "materials[0].emission", GL_OFFSET),
-            offsetof(gpu::Material, emission));
-  EXPECT_EQ(
-      property(GL_BUFFER_VARIABLE, "materials[0].specular_exponent", GL_TOP_LEVEL_ARRAY_STRIDE),
-      sizeof(gpu::Material));
   EXPECT_EQ(property(GL_UNIFORM, "camera.position", GL_OFFSET), offsetof(gpu::Camera, position));
   EXPECT_EQ(property(GL_UNIFORM, "camera.image_size", GL_OFFSET),
             offsetof(gpu::Camera, image_size));
 }
 
-// A batch of light samples and the shadow pass's faces (uniform blocks, std140): the second
-// element's members sit where the C++ arrays put them.
-TEST_F(SharedHeaders, LightSampleBlocksHaveTheCppLayoutInTheDriver) {
+// A batch of light samples, the shadow pass's faces and the G-buffer's views (uniform blocks,
+// std140): the second element's members sit where the C++ arrays put them.
+TEST_F(SharedHeaders, UniformBlocksHaveTheCppLayoutInTheDriver) {
   const gl::Program program = layoutProgram(
       "#include \"realtime/gl/binding_plan_shared.h\"\n"
       "#include \"realtime/lighting/light_sample_shared.h\"\n"
+      "#include \"realtime/gbuffer/gbuffer_views_shared.h\"\n"
       "layout(std140, binding = kLightSamplesBinding) uniform LightSampleBlock {\n"
       "  GpuLightSample samples[kMaxLightBatch];\n"
       "};\n"
       "layout(std140, binding = kShadowFacesBinding) uniform ShadowFaceBlock {\n"
       "  ShadowFace faces[kMaxShadowFaces];\n"
+      "};\n"
+      "layout(std140, binding = kGBufferViewsBinding) uniform GBufferViewBlock {\n"
+      "  GBufferViewRecord views[kMaxGBufferViewsPerDraw];\n"
       "};\n"
       "layout(std430, binding = kTestFirstStorageBinding) buffer Out { vec4 o; };\n"
       "layout(local_size_x = 1) in;\n"
@@ -268,7 +276,7 @@ TEST_F(SharedHeaders, LightSampleBlocksHaveTheCppLayoutInTheDriver) {
       "  int k = int(o.w);\n"
       "  o = samples[k].position + samples[k].axis + samples[k].intensity +\n"
       "      samples[k].view_projection[0] + faces[k].view_projection[1] + "
-      "vec4(faces[k].layer_slot);\n"
+      "vec4(faces[k].layer_slot) + views[k].view_projection[2] + views[k].eye;\n"
       "}\n");
   auto offset = [&](const char* name) {
     return resourceProperty(program, GL_UNIFORM, name, GL_OFFSET);
@@ -283,6 +291,9 @@ TEST_F(SharedHeaders, LightSampleBlocksHaveTheCppLayoutInTheDriver) {
             sizeof(GpuLightSample) + offsetof(GpuLightSample, view_projection));
   EXPECT_EQ(offset("faces[1].view_projection"), sizeof(ShadowFace));
   EXPECT_EQ(offset("faces[1].layer_slot"), sizeof(ShadowFace) + offsetof(ShadowFace, layer_slot));
+  using gpu::GBufferViewRecord;
+  EXPECT_EQ(offset("views[1].view_projection"), sizeof(GBufferViewRecord));
+  EXPECT_EQ(offset("views[1].eye"), sizeof(GBufferViewRecord) + offsetof(GBufferViewRecord, eye));
 }
 
 // The irradiance cache's records (std430 storage): the gradients' arrays where C++ puts them.

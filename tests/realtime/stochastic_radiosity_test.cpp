@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -103,6 +104,70 @@ TEST_F(StochasticRadiosityTest, TwoPatchTransferMatchesTheAnalyticFormFactor) {
   }
 }
 
+// The hemicube's side faces (layers 1..4 of the visibility map, drawn by one instanced draw into
+// the lower half of their layers) see what lies more than 45° off the shooter's normal. Two
+// receivers on the floor beside a ceiling emitter are seen only through them (63°–76° off); a
+// black wall hides one completely, so it must stay exactly dark while the other, in the open,
+// receives about ρ·L^e·F (at least half of it after 300 iterations: a broken side face reads as
+// all-visible or all-hidden and fails one receiver or the other).
+TEST_F(StochasticRadiosityTest, HemicubeSideFacesHideWhatAWallHides) {
+  scene::Material emitter, receiver, black;
+  emitter.name = "emitter";
+  emitter.emission = scene::Rgb(1.0f);
+  receiver.name = "receiver";
+  receiver.diffuse = scene::Rgb(kAlbedo);
+  black.name = "black";
+  scene::Scene s;
+  s.name = "wall between emitter and receiver";
+  s.camera.position = {0.5f, 3.0f, -6.0f};
+  s.camera.look_at = {0.5f, 0.5f, 0.5f};
+  s.materials = {emitter, receiver, black};
+  scene::Mesh light, hidden, open, wall;
+  light.material = 0;
+  hidden.material = open.material = 1;
+  wall.material = 2;
+  scene::appendQuad(light, {0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1});     // normal −y
+  scene::appendQuad(hidden, {3, 0, 0}, {3, 0, 1}, {4, 0, 1}, {4, 0, 0});    // normal +y
+  scene::appendQuad(open, {-3, 0, 0}, {-3, 0, 1}, {-2, 0, 1}, {-2, 0, 0});  // normal +y
+  scene::appendQuad(wall, {2, -0.5f, -1}, {2, 1.5f, -1}, {2, 1.5f, 2}, {2, -0.5f, 2});
+  s.meshes = {light, hidden, open, wall};
+  GpuScene gpu_scene(s, 16, 16);
+  StochasticRadiositySettings settings;
+  settings.atlas_resolution = 64;
+  StochasticRadiosityTechnique technique(settings);
+  technique.prepare(gpu_scene, 16, 16);
+  gl::PassProfiler profiler;
+  for (int i = 0; i < 300; ++i) technique.step(profiler);
+  const std::vector<glm::vec3> radiance = technique.atlasRadiance();
+  const atlas::AtlasTexels& texels = technique.atlasTexels();
+  const std::vector<glm::dvec3> emitter_corners = {{0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};
+  double hidden_max = 0, open_mean = 0, open_expected = 0, open_area = 0;
+  int hidden_texels = 0;
+  for (std::size_t i = 0; i < texels.texels.size(); ++i) {
+    const atlas::AtlasTexel& t = texels.texels[i];
+    if (t.area <= 0) continue;
+    if (t.triangle == 2 || t.triangle == 3) {  // the hidden receiver
+      hidden_max = std::max(hidden_max, double(radiance[i].g));
+      ++hidden_texels;
+    } else if (t.triangle == 4 || t.triangle == 5) {  // the open one
+      open_area += t.area;
+      open_mean += t.area * radiance[i].g;
+      open_expected +=
+          t.area * kAlbedo *
+          pointToPolygonFormFactor(glm::dvec3(t.position), glm::dvec3(t.normal), emitter_corners);
+    }
+  }
+  ASSERT_GT(hidden_texels, 50);
+  ASSERT_GT(open_area, 0.5);
+  open_mean /= open_area;
+  open_expected /= open_area;
+  std::printf("hidden receiver: largest %.3g; open receiver %.5f, expected %.5f\n", hidden_max,
+              open_mean, open_expected);
+  EXPECT_EQ(hidden_max, 0.0);
+  EXPECT_GT(open_mean, 0.5 * open_expected);
+  EXPECT_LT(open_mean, 1.5 * open_expected);
+}
+
 // Spot lights are injected as first-bounce light (light_injection.h): before any iteration every
 // texel of a floor under a spot light holds ρ/π · I · cos θ / d², the analytic reflected radiance
 // (the floor cannot shadow itself, so only the shadow map's bias could make a texel dark).
@@ -186,6 +251,21 @@ TEST(StochasticRadiosity, AFixedSeedGivesTheSameImageEveryRun) {
   const image::Image c = renderCornell(20, {"atlas=64", "seed=1"});
   EXPECT_TRUE(std::equal(a.data().begin(), a.data().end(), b.data().begin()));
   EXPECT_FALSE(std::equal(a.data().begin(), a.data().end(), c.data().begin()));
+}
+
+// The GPU commands of an iteration at the book's 128² atlas: the descent over every pyramid level
+// in one dispatch, the five hemicube faces in one instanced draw, the update, and the pyramid in
+// two dispatches of four levels each (it was 7 + 5 + 1 + 7 = 20). More means a pass per level or
+// per face came back.
+TEST(StochasticRadiosity, GpuCommandsPerIterationStayWithinTheirBound) {
+  const scene::Scene scene = scene::loadScene("cornell", {});
+  const TechniqueInfo& info = findTechnique("stochastic_radiosity");
+  const ParameterValues values = parseParameters(info.parameters, {"atlas=128"}, "technique");
+  const TechniqueRunResult result = runTechnique(scene, info, values, smallRun(3));
+  ASSERT_FALSE(result.iteration_profile.passes.empty());
+  const PassRecord& iteration = result.iteration_profile.passes.front();
+  ASSERT_EQ(iteration.gpu_commands.size(), 3u);
+  for (int commands : iteration.gpu_commands) EXPECT_EQ(commands, 5);
 }
 
 }  // namespace

@@ -9,10 +9,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
+#include <vector>
 
 namespace gib::rt {
 namespace {
+
+using test::GlTest;
 
 constexpr double kSignificance = 0.01;
 constexpr int kResolution = 16;
@@ -82,6 +87,41 @@ TEST_P(TexelSelectionTest, NothingIsSelectedWhenNothingHasPower) {
   selection.buildPyramid();
   selection.select({0.5f});
   EXPECT_EQ(selection.readSelections(1)[0].texel, glm::ivec2(-1, -1));
+}
+
+// The GPU pyramid sums several levels per compute pass (texel_selection.h): every texel of every
+// level is the float sum of its four children, what one pass per level computes, up to the order
+// in which the shader compiler pairs the three additions (a few ulps), at resolutions of one
+// pass (16) and of two and three (128, 1024: a pass's partial top levels).
+TEST_F(GlTest, PyramidLevelsAreTheSumsOfTheirFourChildren) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (const int resolution : {16, 128, 1024}) {
+    TexelSelection selection(SelectionMethod::kGpu, resolution, 1);
+    std::vector<float> power(std::size_t(resolution) * std::size_t(resolution));
+    for (float& p : power) p = unit(random) < 0.2f ? 0.0f : std::pow(10.0f, 3.0f * unit(random));
+    glTextureSubImage2D(selection.powerMap().id(), 0, 0, 0, resolution, resolution, GL_RED,
+                        GL_FLOAT, power.data());
+    selection.buildPyramid();
+    std::vector<float> finer = power;
+    for (int level = 1, size = resolution / 2; size >= 1; ++level, size /= 2) {
+      std::vector<float> coarser(std::size_t(size) * std::size_t(size), -1.0f);
+      glGetTextureImage(selection.powerMap().id(), level, GL_RED, GL_FLOAT,
+                        GLsizei(coarser.size() * sizeof(float)), coarser.data());
+      const int fine = 2 * size;
+      for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+          auto child = [&](int dx, int dy) {
+            return finer[std::size_t((2 * y + dy) * fine + 2 * x + dx)];
+          };
+          const float sum = child(0, 0) + child(1, 0) + child(0, 1) + child(1, 1);
+          ASSERT_NEAR(coarser[std::size_t(y * size + x)], sum,
+                      4.0f * std::numeric_limits<float>::epsilon() * sum)
+              << "resolution " << resolution << ", level " << level << ", texel " << x << "," << y;
+        }
+      finer = std::move(coarser);
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, TexelSelectionTest,

@@ -1,14 +1,15 @@
 // The irradiance volume's lookup (Nijasure et al. 2005, §3.3, §4.4 and §6): the spherical-harmonic
 // coefficients of incident radiance at the probes, interpolated trilinearly to a surface point,
 // and the reflected radiance through eq. 4's zonal transfer factors. Coefficients live in a
-// storage buffer and are interpolated here rather than by 3D-texture hardware, because §6's
+// buffer and are interpolated here rather than by 3D-texture hardware, because §6's
 // indirect shadows weight the eight probes by their visibility, which hardware filtering cannot.
 #include "realtime/sh/spherical_harmonics.glsl"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
 
-layout(std430, binding = kProbeCoefficientsBinding) readonly buffer Coefficients {
-  vec4 coefficients[];  // [probeCoefficientIndex(probe, i)]: rgb of coefficient i
-};
+// The coefficient buffer the projection writes, read as a buffer texture: texel
+// probeCoefficientIndex(probe, i) holds the rgb of coefficient i (gathered across a SIMD row on
+// llvmpipe, where a storage buffer is read lane by lane).
+layout(binding = kProbeCoefficientsUnit) uniform samplerBuffer u_coefficients;
 layout(std430, binding = kPhongFactorsBinding) readonly buffer PhongFactors {
   vec4 phong_factors[];  // per material: eq. 4's band factors of its Phong lobe, bands 0..3
 };
@@ -17,7 +18,12 @@ layout(binding = kProbePositionUnit) uniform sampler2D u_probe_position;  // w: 
 uniform int u_grid_n;
 uniform vec3 u_grid_origin;
 uniform vec3 u_grid_cell;
-uniform int u_coefficient_count;  // 4, 9 or 16
+// SH_COEFFICIENT_COUNT (4, 9 or 16), the coefficients in use, is compiled in: loops over them then
+// unroll and the coefficient arrays live in registers (llvmpipe keeps an array indexed by a
+// uniform-bounded loop in memory, addressed lane by lane).
+#ifndef SH_COEFFICIENT_COUNT
+#error "define SH_COEFFICIENT_COUNT, the spherical-harmonic coefficients in use"
+#endif
 uniform vec4 u_lambert_factors;   // eq. 6 per band, for unit albedo
 uniform bool u_indirect_shadows;
 uniform int u_face;     // cube face size
@@ -91,8 +97,8 @@ void interpolateCoefficients(vec3 p, out vec3 L[kShMaxCoefficients]) {
   for (int corner = 0; corner < 8; ++corner) {
     float w = weights[corner] / total;
     if (w == 0.0) continue;
-    for (int i = 0; i < u_coefficient_count; ++i)
-      L[i] += w * coefficients[probeCoefficientIndex(probes[corner], i)].rgb;
+    for (int i = 0; i < SH_COEFFICIENT_COUNT; ++i)
+      L[i] += w * texelFetch(u_coefficients, probeCoefficientIndex(probes[corner], i)).rgb;
   }
 }
 
@@ -101,6 +107,6 @@ vec3 zonalTransfer(vec3 L[kShMaxCoefficients], vec3 axis, vec4 factors) {
   float y[kShMaxCoefficients];
   shBasis(axis, y);
   vec3 result = vec3(0.0);
-  for (int i = 0; i < u_coefficient_count; ++i) result += factors[shBand(i)] * y[i] * L[i];
+  for (int i = 0; i < SH_COEFFICIENT_COUNT; ++i) result += factors[shBand(i)] * y[i] * L[i];
   return max(result, vec3(0.0));  // a truncated expansion can ring below zero
 }

@@ -14,6 +14,7 @@ namespace gib::rt::gpu {
 // Texture units.
 const int kProbePositionUnit = kTechniqueFirstUnit + 0;  // the probe atlas's positions, w distance
 const int kProbeRadianceUnit = kTechniqueFirstUnit + 1;  // the lit probe atlas, projected to SH
+const int kProbeCoefficientsUnit = kTechniqueFirstUnit + 2;  // the coefficients, a buffer texture
 
 // Storage buffers.
 const int kProbeCoefficientsBinding = kTechniqueFirstStorageBinding + 0;  // vec4 per coefficient
@@ -43,7 +44,7 @@ GIB_SHARED_FUNCTION ivec2 tileOrigin(int tile, int tiles_x, int face_size) {
 }
 
 #ifdef __cplusplus
-static_assert(kProbeRadianceUnit < kTechniqueFirstUnit + kTechniqueUnitCount);
+static_assert(kProbeCoefficientsUnit < kTechniqueFirstUnit + kTechniqueUnitCount);
 static_assert(kProjectionWeightsBinding <
               kTechniqueFirstStorageBinding + kTechniqueStorageBindingCount);
 }  // namespace gib::rt::gpu

@@ -19,13 +19,11 @@ namespace {
 // Cube-map texels per buffer at most: 8³ probes with 32² faces, or 16³ with 16².
 constexpr long long kMaxAtlasTexels = 1 << 25;
 
-void setGridUniforms(const gl::Program& program, const ProbeGrid& grid, int count,
-                     bool indirect_shadows) {
+void setGridUniforms(const gl::Program& program, const ProbeGrid& grid, bool indirect_shadows) {
   const GLuint id = program.id();
   glProgramUniform1i(id, program.uniform("u_grid_n"), grid.n);
   glProgramUniform3fv(id, program.uniform("u_grid_origin"), 1, glm::value_ptr(grid.origin));
   glProgramUniform3fv(id, program.uniform("u_grid_cell"), 1, glm::value_ptr(grid.cell));
-  glProgramUniform1i(id, program.uniform("u_coefficient_count"), count);
   const std::array<float, sh::kShMaxBand + 1> lambert = sh::lambertBandFactors();
   glProgramUniform4fv(id, program.uniform("u_lambert_factors"), 1, lambert.data());
   glProgramUniform1i(id, program.uniform("u_indirect_shadows"), indirect_shadows ? 1 : 0);
@@ -62,6 +60,7 @@ void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int he
   const int count = sh::shCoefficientCount(band_);
   coefficients_ = gl::Buffer(
       std::size_t(gpu::probeCoefficientIndex(grid_.probeCount(), 0)) * sizeof(glm::vec4), nullptr);
+  coefficient_texels_ = gl::Texture::makeBuffer(GL_RGBA32F, coefficients_);
   weights_ = gl::Buffer::fromVector(sh::cubeProjectionWeights(face_, band_));
   std::vector<float> phong;  // per material, bands 0..3
   for (const scene::Material& m : scene.scene().materials) {
@@ -78,8 +77,9 @@ void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int he
   glProgramUniform1i(project_.id(), project_.uniform("u_face"), grid_.face);
   glProgramUniform1i(project_.id(), project_.uniform("u_tiles_x"), grid_.tiles_x);
   glProgramUniform1i(project_.id(), project_.uniform("u_coefficient_count"), count);
-  indirect_ = gl::FullScreenPass("realtime/techniques/irradiance_volume/indirect.frag.glsl");
-  setGridUniforms(indirect_.program(), grid_, count, indirect_shadows_);
+  indirect_ = gl::FullScreenPass("realtime/techniques/irradiance_volume/indirect.frag.glsl",
+                                 fmt::format("#define SH_COEFFICIENT_COUNT {}\n", count));
+  setGridUniforms(indirect_.program(), grid_, indirect_shadows_);
   rasterised_ = false;
 }
 
@@ -95,7 +95,7 @@ void IrradianceVolumeTechnique::project(const RenderTarget& lit) {
   weights_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProjectionWeightsBinding);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   gl::dispatchCompute(GLuint(grid_.probeCount()), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the lookups read them as a buffer texture
 }
 
 void IrradianceVolumeTechnique::addIndirect(const GBuffer& gbuffer, const RenderTarget& target,
@@ -105,7 +105,7 @@ void IrradianceVolumeTechnique::addIndirect(const GBuffer& gbuffer, const Render
   glUniform1i(indirect_.program().uniform("u_normals_face_viewer"), probe_view ? 1 : 0);
   gbuffer.bindTextures();
   probe_gbuffer_->position().bind(gpu::kProbePositionUnit);
-  coefficients_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kProbeCoefficientsBinding);
+  coefficient_texels_.bind(gpu::kProbeCoefficientsUnit);
   phong_factors_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPhongFactorsBinding);
   target.bind();
   glDisable(GL_DEPTH_TEST);

@@ -58,6 +58,7 @@ class IrradianceVolumeTechnique final : public Technique {
   std::optional<GBuffer> camera_gbuffer_, probe_gbuffer_;
   std::optional<RenderTarget> probe_direct_, probe_lit_;
   gl::Buffer coefficients_, weights_, phong_factors_;
+  gl::Texture coefficient_texels_;  // coefficients_ as a buffer texture, for the lookups
   gl::Program project_;
   gl::FullScreenPass indirect_;
 };

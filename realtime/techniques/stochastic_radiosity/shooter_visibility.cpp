@@ -25,17 +25,16 @@ ShooterVisibility::ShooterVisibility(ShooterProjection projection, int map_size,
   distance_ = gl::Texture::make2DArray(GL_R32F, map_size, map_size, layers);
   distance_.setFilter(GL_NEAREST, GL_NEAREST);
   depth_ = gl::Texture::make2DArray(GL_DEPTH_COMPONENT32F, map_size, map_size, layers);
-  for (int layer = 0; layer < layers; ++layer) {
-    gl::Framebuffer& fb = faces_[std::size_t(layer)];
-    fb.attachColor(0, distance_, 0, layer);
-    fb.attachDepth(depth_, 0, layer);
-    fb.setDrawBuffers(1);
-    fb.checkComplete();
-  }
-  program_ = gl::buildProgram(
-      {{GL_VERTEX_SHADER, "realtime/techniques/stochastic_radiosity/visibility.vert.glsl"},
-       {GL_FRAGMENT_SHADER, "realtime/techniques/stochastic_radiosity/visibility.frag.glsl"}},
-      defines());
+  // Every layer behind one framebuffer: one clear and one instanced draw for the five faces.
+  framebuffer_.attachColor(0, distance_);
+  framebuffer_.attachDepth(depth_);
+  framebuffer_.setDrawBuffers(1);
+  framebuffer_.checkComplete();
+  program_ =
+      gl::buildLayeredProgram({"realtime/techniques/stochastic_radiosity/visibility.vert.glsl",
+                               "realtime/techniques/stochastic_radiosity/visibility.geom.glsl",
+                               "realtime/techniques/stochastic_radiosity/visibility.frag.glsl"},
+                              defines());
   glProgramUniform1f(program_.id(), program_.uniform("u_near"), near_);
   glProgramUniform1f(program_.id(), program_.uniform("u_far"), far_);
   glProgramUniform1f(program_.id(), program_.uniform("u_shooter_lift"), lift_);
@@ -53,18 +52,13 @@ void ShooterVisibility::render(const atlas::AtlasMesh& mesh) const {
   glDisable(GL_BLEND);
   const float clear_distance[4] = {kNothingDrawn, 0, 0, 0};
   const float clear_depth = 1.0f;
-  const bool hemicube = projection_ == ShooterProjection::kHemicube;
-  if (!hemicube) glEnable(GL_CLIP_DISTANCE0);
-  for (int face = 0; face < (hemicube ? 5 : 1); ++face) {
-    const gl::Framebuffer& fb = faces_[std::size_t(face)];
-    glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, clear_distance);
-    glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &clear_depth);
-    fb.bind();
-    // The side faces of the hemicube are half faces: the rows above the shooter's horizon.
-    glViewport(0, 0, size_, face == 0 ? size_ : size_ / 2);
-    if (hemicube) glUniform1i(program_.uniform("u_face"), face);
-    mesh.draw();
-  }
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear_distance);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &clear_depth);
+  framebuffer_.bind();
+  glViewport(0, 0, size_, size_);
+  // The hemisphere's back half-space, or the rows above a side face's half, are clipped.
+  glEnable(GL_CLIP_DISTANCE0);
+  mesh.draw(projection_ == ShooterProjection::kHemicube ? 5 : 1);
   glDisable(GL_CLIP_DISTANCE0);
 }
 

@@ -1,13 +1,13 @@
 // The first of the two passes of the radiance update (Barsi & Jakab §3.2, book §7.1.2): the
 // scene drawn from the selected shooter into a visibility map of distances, as a hemicube (five
-// draws) or a hemispherical projection (one draw). The shooter is read from the Shooters buffer
-// on the GPU (shooter.glsl), so no selection result travels back to the CPU.
+// faces, layers of one array drawn by one instanced draw) or a hemispherical projection. The
+// shooter is read from the Shooters buffer on the GPU (shooter.glsl), so no selection result
+// travels back to the CPU.
 #pragma once
 
 #include "realtime/atlas/atlas_mesh.h"
 #include "realtime/gl/objects.h"
 
-#include <array>
 #include <string>
 
 namespace gib::rt {
@@ -39,7 +39,7 @@ class ShooterVisibility {
   float near_, far_, lift_;
   gl::Program program_;
   gl::Texture distance_, depth_;
-  std::array<gl::Framebuffer, 5> faces_;
+  gl::Framebuffer framebuffer_;  // every layer
 };
 
 }  // namespace gib::rt

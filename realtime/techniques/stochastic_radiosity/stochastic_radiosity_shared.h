@@ -25,13 +25,17 @@ const int kShootersBinding = kTechniqueFirstStorageBinding + 0;
 const int kRadiositySourceUnit = kTechniqueFirstUnit + 0;     // L^e plus injected direct light
 const int kRadiosityReflectedUnit = kTechniqueFirstUnit + 1;  // the reflected estimate L̃^r
 const int kVisibilityUnit = kTechniqueFirstUnit + 2;          // the shooter's visibility map
+const int kRadiosityPowerUnit = kTechniqueFirstUnit + 3;      // the power pyramid (the descent)
 
 // Work groups: the power pyramid's square groups, the descent's one-dimensional ones.
 const int kPyramidGroupSize = 8;
+// Pyramid levels one pass writes (image units kImageDestinationUnit and the three after it): an
+// invocation's 8×8 texels and the 4×4, 2×2 and 1×1 above them.
+const int kPyramidLevelsPerPass = 4;
 const int kDescentGroupSize = 64;
 
 #ifdef __cplusplus
 static_assert(sizeof(Shooter) == 32, "std430 struct Shooter");
-static_assert(kVisibilityUnit < kTechniqueFirstUnit + kTechniqueUnitCount);
+static_assert(kRadiosityPowerUnit < kTechniqueFirstUnit + kTechniqueUnitCount);
 }  // namespace gib::rt::gpu
 #endif

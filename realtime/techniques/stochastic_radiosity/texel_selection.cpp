@@ -3,6 +3,7 @@
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/shader_library.h"
 
+#include <algorithm>
 #include <bit>
 #include <stdexcept>
 
@@ -38,15 +39,21 @@ TexelSelection::TexelSelection(SelectionMethod method, int resolution, int capac
 void TexelSelection::buildPyramid() const {
   if (method_ != SelectionMethod::kGpu) return;
   sum_.use();
-  for (int level = 1; level < levels_; ++level) {
+  // Passes of up to kPyramidLevelsPerPass levels each (two at the book's 128²).
+  for (int finer = 0; finer + 1 < levels_; finer += gpu::kPyramidLevelsPerPass) {
+    const int count = std::min(gpu::kPyramidLevelsPerPass, levels_ - 1 - finer);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    bindLevel(gpu::kImageSourceUnit, power_, level - 1, GL_READ_ONLY);
-    bindLevel(gpu::kImageDestinationUnit, power_, level, GL_WRITE_ONLY);
-    const int size = std::max(1, resolution_ >> level);
+    bindLevel(gpu::kImageSourceUnit, power_, finer, GL_READ_ONLY);
+    for (int k = 0; k < gpu::kPyramidLevelsPerPass; ++k)  // unused units: the top, not written
+      bindLevel(GLuint(gpu::kImageDestinationUnit + k), power_,
+                std::min(finer + 1 + k, levels_ - 1), GL_WRITE_ONLY);
+    glUniform1i(sum_.uniform("u_levels"), count);
+    const int size = std::max(1, resolution_ >> (finer + count));
+    glUniform2i(sum_.uniform("u_top_size"), size, size);
     const GLuint groups = GLuint((size + gpu::kPyramidGroupSize - 1) / gpu::kPyramidGroupSize);
     gl::dispatchCompute(groups, groups, 1);
   }
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void TexelSelection::select(const std::vector<float>& u) {
@@ -65,16 +72,11 @@ void TexelSelection::selectOnGpu(const std::vector<float>& u) {
   shooters_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kShootersBinding);
   descend_.use();
   glUniform1i(descend_.uniform("u_count"), GLint(u.size()));
-  // The descent reads the level it descends into, and the 1×1 top on its first pass.
-  bindLevel(gpu::kImageDestinationUnit, power_, levels_ - 1, GL_READ_ONLY);
+  glUniform1i(descend_.uniform("u_top"), levels_ - 1);
+  power_.bind(gpu::kRadiosityPowerUnit);
   const GLuint groups = GLuint((u.size() + gpu::kDescentGroupSize - 1) / gpu::kDescentGroupSize);
-  // log2 R passes, from the level below the top down to the texels themselves.
-  for (int level = levels_ - 2; level >= 0; --level) {
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glUniform1i(descend_.uniform("u_first"), level == levels_ - 2);
-    bindLevel(gpu::kImageSourceUnit, power_, level, GL_READ_ONLY);
-    gl::dispatchCompute(groups, 1, 1);
-  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  gl::dispatchCompute(groups, 1, 1);  // every level in one pass
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

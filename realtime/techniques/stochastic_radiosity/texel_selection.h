@@ -1,10 +1,11 @@
 // Random texel selection with probability proportional to the luminance of the texel's power,
 // p_j = lum(L_j)·A_j / Φ, Φ = Σ lum(L_i)·A_i (Barsi & Jakab §3.1; book §7.1.1), in the two
 // variants the paper measured:
-//   kGpu: a summed pyramid of the power map (log2 R compute passes, each texel the sum of four
-//         below: the paper's and book's "mipmap"), then a descent of log2 R passes from the top,
-//         each choosing one of four children by comparing the running sum with the remaining
-//         selection value (the book's SelectTexel). Nothing is read back.
+//   kGpu: a summed pyramid of the power map (each texel the sum of four below: the paper's and
+//         book's "mipmap"; compute passes of four levels each, two at 128²), then a descent
+//         from the top in one pass, each level choosing one of four children by comparing the
+//         running sum with the remaining selection value (the book's SelectTexel). Nothing is
+//         read back.
 //   kCpu: the power map is read back and searched linearly with a running sum (the paper's first
 //         implementation, whose read-back it found to dominate the iteration).
 // Both write the selected texels into one storage buffer (Shooters, whose record is declared in
