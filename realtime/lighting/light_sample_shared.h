@@ -39,7 +39,7 @@ GIB_SHARED_FUNCTION vec4 pointSampleIrradiance(GpuLightSample s, vec3 p) {
   // Lambertian emitters' points (exponent 1) and uniform spots (0) skip the power.
   float falloff = 1.0f;
   if (s.intensity.w == 1.0f)
-    falloff = cos_axis;
+    falloff = max(cos_axis, 0.0f);
   else if (s.intensity.w != 0.0f)
     falloff = pow(max(cos_axis, 0.0f), s.intensity.w);
   // position.w: 0 for a light that is a point; a virtual light that stands for a patch (light

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <cmath>
 #include <numbers>
 
 namespace gib::rt {
@@ -90,6 +91,35 @@ TEST(LightSamples, SpotAndDirectionalLightsPassThroughUnchanged) {
   EXPECT_EQ(samples[0].intensity, spot.intensity);
   EXPECT_EQ(samples[1].kind, LightSampleKind::kDirectional);
   EXPECT_EQ(samples[1].intensity, sun.irradiance);
+}
+
+// What a point sample delivers (pointSampleIrradiance, shared by the shading passes and the CPU
+// irradiance cache): I·cos^n θ / d² inside its cone, for the exponents with shortcuts (0, 1) and
+// without (2.5); zero outside the cone; and never negative behind a cone wider than a hemisphere,
+// where cos θ < 0.
+TEST(LightSamples, PointSampleIrradianceFollowsItsFalloffAndIsNeverNegative) {
+  for (const float exponent : {0.0f, 1.0f, 2.5f}) {
+    LightSample s;
+    s.position = {0.0f, 2.0f, 0.0f};
+    s.axis = {0.0f, -1.0f, 0.0f};
+    s.intensity = scene::Rgb(3.0f);
+    s.exponent = exponent;
+    s.cos_cone = -1.0f;  // every direction
+    const gpu::GpuLightSample g = toGpuLightSample(s);
+    const glm::vec3 p(1.0f, 0.0f, 0.5f);  // below the light, off axis
+    const glm::vec3 to_p = p - s.position;
+    const float d2 = glm::dot(to_p, to_p), cos_theta = -to_p.y / std::sqrt(d2);
+    const glm::vec4 lit = gpu::pointSampleIrradiance(g, p);
+    EXPECT_EQ(lit.w, 1.0f);
+    EXPECT_NEAR(lit.x, 3.0f * std::pow(cos_theta, exponent) / d2, 1e-6f) << exponent;
+    const glm::vec4 behind = gpu::pointSampleIrradiance(g, glm::vec3(1.0f, 3.0f, 0.0f));
+    EXPECT_GE(behind.x, 0.0f) << exponent;
+    if (exponent > 0.0f) {
+      EXPECT_EQ(behind.x, 0.0f) << exponent;
+    }
+    s.cos_cone = 0.9f;  // a narrow spot: p lies outside it
+    EXPECT_EQ(gpu::pointSampleIrradiance(toGpuLightSample(s), p), glm::vec4(0.0f)) << exponent;
+  }
 }
 
 }  // namespace
