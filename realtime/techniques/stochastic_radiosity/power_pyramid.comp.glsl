@@ -1,9 +1,9 @@
 // Up to kPyramidLevelsPerPass levels of the power pyramid in one pass: each texel the sum of the
 // four below it (Barsi & Jakab sum four texels; the book allows sum or average: a sum keeps the
 // top texel equal to Φ). An invocation owns one texel of the pass's highest level and sums the
-// block below it level by level in registers (a 16×16 block of the finer level for four levels),
-// adding the four children in the same order at every level, so the sums are those of one pass
-// per level. No shared memory: llvmpipe runs work-group barriers as coroutine switches.
+// block below it level by level in a local array (a 16×16 block of the finer level for four
+// levels), adding the four children in the order one pass per level added them. No shared memory:
+// llvmpipe runs work-group barriers as coroutine switches.
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 
 layout(local_size_x = kPyramidGroupSize, local_size_y = kPyramidGroupSize) in;
