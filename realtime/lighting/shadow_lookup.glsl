@@ -2,15 +2,26 @@
 // §4.1.2–4.1.3): a depth comparison (hard: nearest texel; PCF: the hardware's bilinearly filtered
 // comparison, the book's 2×2 PCF, over a (2r+1)² grid of taps one texel apart), or for a variance
 // shadow map the one-tailed Chebyshev bound σ²/(σ² + (z − E[Z])²), taken as 1 when z ≤ E[Z].
-// The batch's maps are one array texture; sample k's is layer k.
+// The batch's maps are one array texture; sample k's is layer k (a batch of one point sample:
+// one cube map).
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/lighting/light_space.glsl"
 
 #ifdef POINT_LIGHT
+#ifdef SINGLE_CUBE_MAP  // a batch of one sample: one cube map (shadow_maps.cpp)
+#define CUBE_COORD(v, layer) (v)
+#ifdef VARIANCE_SHADOW_MAP
+layout(binding = kShadowMapUnit) uniform samplerCube u_shadow_map;
+#else
+layout(binding = kShadowMapUnit) uniform samplerCubeShadow u_shadow_map;
+#endif
+#else
+#define CUBE_COORD(v, layer) vec4(v, layer)
 #ifdef VARIANCE_SHADOW_MAP
 layout(binding = kShadowMapUnit) uniform samplerCubeArray u_shadow_map;
 #else
 layout(binding = kShadowMapUnit) uniform samplerCubeArrayShadow u_shadow_map;
+#endif
 #endif
 #else
 #ifdef VARIANCE_SHADOW_MAP
@@ -48,12 +59,16 @@ float shadowTap(int k, vec3 p) {
 #ifdef POINT_LIGHT
   vec3 v = p - u_light_samples[k].position.xyz;
 #ifdef VARIANCE_SHADOW_MAP
-  return chebyshevUpperBound(texture(u_shadow_map, vec4(v, layer)).rg, lightDistance(k, p));
+  return chebyshevUpperBound(texture(u_shadow_map, CUBE_COORD(v, layer)).rg, lightDistance(k, p));
 #else
   // The window depth the cube face selected by v stored for this point.
   float major = max(abs(v.x), max(abs(v.y), abs(v.z)));
   float ndc = (u_far + u_near) / (u_far - u_near) - 2.0 * u_far * u_near / ((u_far - u_near) * major);
+#ifdef SINGLE_CUBE_MAP
+  return texture(u_shadow_map, vec4(v, ndc * 0.5 + 0.5));
+#else
   return texture(u_shadow_map, vec4(v, layer), ndc * 0.5 + 0.5);
+#endif
 #endif
 #else
   vec3 c = (u_light_samples[k].view_projection * vec4(p, 1.0)).xyz * 0.5 + 0.5;

@@ -12,7 +12,10 @@
 #include "realtime/lighting/light_sample_shared.h"
 
 layout(local_size_x = kVsmBlurGroupSize, local_size_y = 1, local_size_z = 1) in;
-#ifdef POINT_LIGHT
+#if defined(POINT_LIGHT) && defined(SINGLE_CUBE_MAP)
+layout(rg32f, binding = kImageSourceUnit) uniform readonly imageCube u_source;
+layout(rg32f, binding = kImageDestinationUnit) uniform writeonly imageCube u_destination;
+#elif defined(POINT_LIGHT)
 layout(rg32f, binding = kImageSourceUnit) uniform readonly imageCubeArray u_source;
 layout(rg32f, binding = kImageDestinationUnit) uniform writeonly imageCubeArray u_destination;
 #else
