@@ -7,28 +7,29 @@
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/lighting/light_space.glsl"
 
+// The map's sampler types, moments (VSM) and depth comparison, and how a cube lookup names its
+// sample's cube: a batch of one point sample has one cube map (shadow_maps.cpp), more a
+// cube-map array.
 #ifdef POINT_LIGHT
-#ifdef SINGLE_CUBE_MAP  // a batch of one sample: one cube map (shadow_maps.cpp)
-#define CUBE_COORD(v, layer) (v)
+#ifdef SINGLE_CUBE_MAP
+#define MOMENTS_SAMPLER samplerCube
+#define DEPTH_SAMPLER samplerCubeShadow
+#define CUBE_MOMENTS(v, layer) texture(u_shadow_map, v)
+#define CUBE_COMPARE(v, layer, depth) texture(u_shadow_map, vec4(v, depth))
+#else
+#define MOMENTS_SAMPLER samplerCubeArray
+#define DEPTH_SAMPLER samplerCubeArrayShadow
+#define CUBE_MOMENTS(v, layer) texture(u_shadow_map, vec4(v, layer))
+#define CUBE_COMPARE(v, layer, depth) texture(u_shadow_map, vec4(v, layer), depth)
+#endif
+#else
+#define MOMENTS_SAMPLER sampler2DArray
+#define DEPTH_SAMPLER sampler2DArrayShadow
+#endif
 #ifdef VARIANCE_SHADOW_MAP
-layout(binding = kShadowMapUnit) uniform samplerCube u_shadow_map;
+layout(binding = kShadowMapUnit) uniform MOMENTS_SAMPLER u_shadow_map;
 #else
-layout(binding = kShadowMapUnit) uniform samplerCubeShadow u_shadow_map;
-#endif
-#else
-#define CUBE_COORD(v, layer) vec4(v, layer)
-#ifdef VARIANCE_SHADOW_MAP
-layout(binding = kShadowMapUnit) uniform samplerCubeArray u_shadow_map;
-#else
-layout(binding = kShadowMapUnit) uniform samplerCubeArrayShadow u_shadow_map;
-#endif
-#endif
-#else
-#ifdef VARIANCE_SHADOW_MAP
-layout(binding = kShadowMapUnit) uniform sampler2DArray u_shadow_map;
-#else
-layout(binding = kShadowMapUnit) uniform sampler2DArrayShadow u_shadow_map;
-#endif
+layout(binding = kShadowMapUnit) uniform DEPTH_SAMPLER u_shadow_map;
 #endif
 
 uniform int u_shadow_map_size;
@@ -59,16 +60,12 @@ float shadowTap(int k, vec3 p) {
 #ifdef POINT_LIGHT
   vec3 v = p - u_light_samples[k].position.xyz;
 #ifdef VARIANCE_SHADOW_MAP
-  return chebyshevUpperBound(texture(u_shadow_map, CUBE_COORD(v, layer)).rg, lightDistance(k, p));
+  return chebyshevUpperBound(CUBE_MOMENTS(v, layer).rg, lightDistance(k, p));
 #else
   // The window depth the cube face selected by v stored for this point.
   float major = max(abs(v.x), max(abs(v.y), abs(v.z)));
   float ndc = (u_far + u_near) / (u_far - u_near) - 2.0 * u_far * u_near / ((u_far - u_near) * major);
-#ifdef SINGLE_CUBE_MAP
-  return texture(u_shadow_map, vec4(v, ndc * 0.5 + 0.5));
-#else
-  return texture(u_shadow_map, vec4(v, layer), ndc * 0.5 + 0.5);
-#endif
+  return CUBE_COMPARE(v, layer, ndc * 0.5 + 0.5);
 #endif
 #else
   vec3 c = (u_light_samples[k].view_projection * vec4(p, 1.0)).xyz * 0.5 + 0.5;

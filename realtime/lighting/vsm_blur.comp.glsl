@@ -12,16 +12,17 @@
 #include "realtime/lighting/light_sample_shared.h"
 
 layout(local_size_x = kVsmBlurGroupSize, local_size_y = 1, local_size_z = 1) in;
+// The batch's moments: a cube map for one point sample, a cube-map array for more, a 2D array
+// for directional samples (shadow_maps.cpp); each addressed by (x, y, layer).
 #if defined(POINT_LIGHT) && defined(SINGLE_CUBE_MAP)
-layout(rg32f, binding = kImageSourceUnit) uniform readonly imageCube u_source;
-layout(rg32f, binding = kImageDestinationUnit) uniform writeonly imageCube u_destination;
+#define MOMENTS_IMAGE imageCube
 #elif defined(POINT_LIGHT)
-layout(rg32f, binding = kImageSourceUnit) uniform readonly imageCubeArray u_source;
-layout(rg32f, binding = kImageDestinationUnit) uniform writeonly imageCubeArray u_destination;
+#define MOMENTS_IMAGE imageCubeArray
 #else
-layout(rg32f, binding = kImageSourceUnit) uniform readonly image2DArray u_source;
-layout(rg32f, binding = kImageDestinationUnit) uniform writeonly image2DArray u_destination;
+#define MOMENTS_IMAGE image2DArray
 #endif
+layout(rg32f, binding = kImageSourceUnit) uniform readonly MOMENTS_IMAGE u_source;
+layout(rg32f, binding = kImageDestinationUnit) uniform writeonly MOMENTS_IMAGE u_destination;
 layout(std140, binding = kShadowFacesBinding) uniform ShadowFaceBlock {
   ShadowFace u_shadow_faces[kMaxShadowFaces];
 };
