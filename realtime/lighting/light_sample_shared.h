@@ -36,12 +36,7 @@ GIB_SHARED_FUNCTION vec4 pointSampleIrradiance(GpuLightSample s, vec3 p) {
   vec3 wi = to_light * inversesqrt(distance_squared);
   float cos_axis = dot(-wi, vec3(s.axis));
   if (cos_axis < s.axis.w) return vec4(0.0f);
-  // Lambertian emitters' points (exponent 1) and uniform spots (0) skip the power.
-  float falloff = 1.0f;
-  if (s.intensity.w == 1.0f)
-    falloff = max(cos_axis, 0.0f);
-  else if (s.intensity.w != 0.0f)
-    falloff = pow(max(cos_axis, 0.0f), s.intensity.w);
+  float falloff = s.intensity.w == 0.0f ? 1.0f : pow(max(cos_axis, 0.0f), s.intensity.w);
   // position.w: 0 for a light that is a point; a virtual light that stands for a patch (light
   // path maps) gives the patch's area over π, which keeps its irradiance on a receiver beside it
   // finite (the on-axis irradiance of a disk of that area).

@@ -9,14 +9,14 @@
 layout(std140, binding = kShadowFacesBinding) uniform ShadowFaceBlock {
   ShadowFace u_shadow_faces[kMaxShadowFaces];
 };
-#ifdef LAYER_FROM_VERTEX_SHADER
-out vec3 v_world;
-flat out int v_slot;
-#else
-out vec3 g_world;
-flat out int g_slot;
+// Without vertex-shader layers the outputs go to shadow.geom.glsl under g_ names.
+#ifndef LAYER_FROM_VERTEX_SHADER
+#define v_world g_world
+#define v_slot g_slot
 flat out int g_layer;
 #endif
+out vec3 v_world;
+flat out int v_slot;
 
 void main() {
   ivec4 layer_slot = u_shadow_faces[gl_InstanceID].layer_slot;
@@ -30,13 +30,11 @@ void main() {
   if (light.axis.w >= 0.0)
     gl_ClipDistance[0] = dot(vertex_position - light.position.xyz, light.axis.xyz);
 #endif
-#ifdef LAYER_FROM_VERTEX_SHADER
   v_world = vertex_position;
   v_slot = layer_slot.y;
+#ifdef LAYER_FROM_VERTEX_SHADER
   gl_Layer = layer_slot.x;
 #else
-  g_world = vertex_position;
-  g_slot = layer_slot.y;
   g_layer = layer_slot.x;
 #endif
 }

@@ -9,19 +9,17 @@
 uniform float u_near;
 uniform float u_far;
 
-#ifdef LAYER_FROM_VERTEX_SHADER
-out vec3 v_local;
-#define LOCAL_OUT v_local
-#else
-out vec3 g_local;
+// Without vertex-shader layers the outputs go to visibility.geom.glsl under g_ names.
+#ifndef LAYER_FROM_VERTEX_SHADER
+#define v_local g_local
 flat out int g_layer;
-#define LOCAL_OUT g_local
 #endif
+out vec3 v_local;
 
 void main() {
   ShooterFrame frame = shooterFrame();
   vec3 l = shooterLocal(frame, vertex_position);
-  LOCAL_OUT = l;
+  v_local = l;
 #ifdef HEMICUBE
   int face = gl_InstanceID;
   vec3 c = hemicubeFaceCoordinates(l, face);
