@@ -9,7 +9,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 
@@ -60,31 +62,56 @@ void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
 }
 
 void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>& views) {
-  if (!views_program_.id()) {
+  if (!views_program_.id())
     views_program_ = gl::buildLayeredProgram(
         {"realtime/gbuffer/gbuffer.vert.glsl", "realtime/gbuffer/gbuffer_views.geom.glsl",
          "realtime/gbuffer/gbuffer.frag.glsl"},
         "#define EXPLICIT_VIEW 1\n", views_from_geometry_shader_, gl::InstanceTarget::kViewport);
-    views_ = gl::Buffer(sizeof(gpu::GBufferViewRecord) * gpu::kMaxGBufferViewsPerDraw, nullptr);
+  // Views go in draws of up to kMaxGBufferViewsPerDraw, each draw's block of records at an
+  // offset the GL lets a uniform block start at; all of them, and every draw's records, are
+  // uploaded at once rather than between draws.
+  GLint alignment = 256;
+  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  const std::size_t block_bytes = sizeof(gpu::GBufferViewRecord) * gpu::kMaxGBufferViewsPerDraw;
+  const std::size_t stride =
+      (block_bytes + std::size_t(alignment) - 1) / std::size_t(alignment) * std::size_t(alignment);
+  const std::size_t draws =
+      (views.size() + gpu::kMaxGBufferViewsPerDraw - 1) / gpu::kMaxGBufferViewsPerDraw;
+  std::vector<std::byte> blocks(draws * stride);
+  std::vector<DrawArraysIndirectCommand> records;
+  std::vector<std::size_t> first_record(draws + 1, 0);
+  const TriangleChunk everything{0, GLsizei(scene.vertexCount()), glm::vec3(0.0f), glm::vec3(0.0f)};
+  for (std::size_t d = 0; d < draws; ++d) {
+    for (std::size_t i = 0; i < std::size_t(gpu::kMaxGBufferViewsPerDraw); ++i) {
+      const std::size_t v = d * gpu::kMaxGBufferViewsPerDraw + i;
+      if (v >= views.size()) break;
+      const gpu::GBufferViewRecord record{views[v].view_projection, glm::vec4(views[v].eye, 1.0f)};
+      std::memcpy(blocks.data() + d * stride + i * sizeof(record), &record, sizeof(record));
+      if (cull_views_)
+        appendVisibleRuns(scene.chunks(), views[v].view_projection, GLuint(i), records);
+      else if (everything.vertex_count > 0)
+        records.push_back({GLuint(everything.vertex_count), 1, 0, GLuint(i)});
+    }
+    first_record[d + 1] = records.size();
   }
+  if (views_.bytes() < blocks.size()) views_ = gl::Buffer(blocks.size(), nullptr);
+  if (view_draws_.bytes() < records.size() * sizeof(DrawArraysIndirectCommand))
+    view_draws_ = gl::Buffer(records.size() * sizeof(DrawArraysIndirectCommand), nullptr);
+  views_.update(0, blocks.size(), blocks.data());
+  view_draws_.update(0, records.size() * sizeof(DrawArraysIndirectCommand), records.data());
+
   clearAndSetState();
   views_program_.use();
   scene.bindSceneBuffers();
-  // One instanced draw per block of views, view i of a block in viewport i.
-  std::vector<gpu::GBufferViewRecord> records;
-  for (std::size_t first = 0; first < views.size(); first += gpu::kMaxGBufferViewsPerDraw) {
-    const std::size_t count =
-        std::min(views.size() - first, std::size_t(gpu::kMaxGBufferViewsPerDraw));
-    records.clear();
-    for (std::size_t i = first; i < first + count; ++i) {
-      const GBufferView& v = views[i];
-      records.push_back({v.view_projection, glm::vec4(v.eye, 1.0f)});
-      glViewportIndexedf(GLuint(i - first), float(v.x), float(v.y), float(v.width),
-                         float(v.height));
+  for (std::size_t d = 0; d < draws; ++d) {
+    for (std::size_t i = 0; i < std::size_t(gpu::kMaxGBufferViewsPerDraw); ++i) {
+      const std::size_t v = d * gpu::kMaxGBufferViewsPerDraw + i;
+      if (v >= views.size()) break;
+      glViewportIndexedf(GLuint(i), float(views[v].x), float(views[v].y), float(views[v].width),
+                         float(views[v].height));
     }
-    views_.update(0, records.size() * sizeof(gpu::GBufferViewRecord), records.data());
-    views_.bindBase(GL_UNIFORM_BUFFER, gpu::kGBufferViewsBinding);
-    scene.draw(int(count));
+    views_.bindRange(GL_UNIFORM_BUFFER, gpu::kGBufferViewsBinding, d * stride, block_bytes);
+    scene.drawRecords(view_draws_, first_record[d], first_record[d + 1] - first_record[d]);
   }
   glViewport(0, 0, width_, height_);  // every viewport of the array back to the whole buffer
 }

@@ -36,8 +36,9 @@ class GBuffer {
 
   // Rasterises the scene from its camera.
   void render(const GpuScene& scene, gl::PassProfiler* profiler = nullptr);
-  // Clears the whole buffer and rasterises each view into its rectangle: instanced draws of up to
-  // gpu::kMaxGBufferViewsPerDraw views, instance i into viewport i of the viewport array.
+  // Clears the whole buffer and rasterises each view into its rectangle: multi-draws of up to
+  // gpu::kMaxGBufferViewsPerDraw views, view i into viewport i of the viewport array, each view
+  // drawing only the triangle chunks its frustum may touch (view_culling.h).
   void renderViews(const GpuScene& scene, const std::vector<GBufferView>& views);
 
   // RGBA32F textures; background pixels have distance (w of position) and material = −1.
@@ -57,6 +58,8 @@ class GBuffer {
     views_from_geometry_shader_ = true;
     views_program_ = gl::Program();
   }
+  // renderViews draws every triangle into every view (tests compare culling with drawing all).
+  void drawViewsWithoutCulling() { cull_views_ = false; }
 
  private:
   int width_, height_;
@@ -66,7 +69,10 @@ class GBuffer {
   gl::Framebuffer framebuffer_;
   gl::Program program_;
   gl::Program views_program_;  // built on first use of renderViews
-  gl::Buffer views_;           // the views of one draw, gpu::GBufferViewRecord
+  // Every view of renderViews (gpu::GBufferViewRecord), each draw's at an aligned offset, and
+  // the draws' records (DrawArraysIndirectCommand): uploaded once per call.
+  gl::Buffer views_, view_draws_;
+  bool cull_views_ = true;
   bool views_from_geometry_shader_ = false;
 };
 

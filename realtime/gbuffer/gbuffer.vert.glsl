@@ -2,11 +2,13 @@
 #include "realtime/gpu_scene/vertex.glsl"
 
 #ifdef EXPLICIT_VIEW
-// Views other than the camera's (GBuffer::renderViews): instance i draws through view i into
-// viewport i, chosen here where the GL allows, else in gbuffer_views.geom.glsl (which then takes
+// Views other than the camera's (GBuffer::renderViews): a draw's records with base instance i
+// draw through view i into viewport i, chosen here where the GL allows, else in gbuffer_views.geom.glsl (which then takes
 // these outputs under g_ names).
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gbuffer/gbuffer_views_shared.h"
+// The view's index in its draw: the base instance of its multi-draw records (view_culling.h).
+layout(location = kVertexInstanceLocation) in uint vertex_instance;
 layout(std140, binding = kGBufferViewsBinding) uniform GBufferViewBlock {
   GBufferViewRecord u_views[kMaxGBufferViewsPerDraw];
 };
@@ -29,12 +31,13 @@ void main() {
   world_normal = vertex_normal;
   material = vertex_material;
 #ifdef EXPLICIT_VIEW
-  view_eye = u_views[gl_InstanceID].eye.xyz;
-  gl_Position = u_views[gl_InstanceID].view_projection * vec4(vertex_position, 1.0);
+  int view = int(vertex_instance);
+  view_eye = u_views[view].eye.xyz;
+  gl_Position = u_views[view].view_projection * vec4(vertex_position, 1.0);
 #ifdef VIEWPORT_FROM_VERTEX_SHADER
-  gl_ViewportIndex = gl_InstanceID;
+  gl_ViewportIndex = view;
 #else
-  g_viewport = gl_InstanceID;
+  g_viewport = view;
 #endif
 #else
   gl_Position = camera.view_projection * vec4(vertex_position, 1.0);

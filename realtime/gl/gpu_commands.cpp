@@ -17,6 +17,11 @@ void drawArraysInstanced(GLenum mode, GLint first, GLsizei count, GLsizei instan
   glDrawArraysInstanced(mode, first, count, instances);
 }
 
+void multiDrawArraysIndirect(GLenum mode, std::size_t offset, GLsizei records) {
+  ++commands_issued;
+  glMultiDrawArraysIndirect(mode, reinterpret_cast<const void*>(offset), records, 0);
+}
+
 void dispatchCompute(GLuint x, GLuint y, GLuint z) {
   ++commands_issued;
   glDispatchCompute(x, y, z);

@@ -7,12 +7,16 @@
 
 #include "realtime/gl/gl.h"
 
+#include <cstddef>
 #include <cstdint>
 
 namespace gib::rt::gl {
 
 void drawArrays(GLenum mode, GLint first, GLsizei count);
 void drawArraysInstanced(GLenum mode, GLint first, GLsizei count, GLsizei instances);
+// The records of the bound GL_DRAW_INDIRECT_BUFFER from byte `offset` (DrawArraysIndirectCommand,
+// tightly packed): one command however many records, as the GPU's front end walks them itself.
+void multiDrawArraysIndirect(GLenum mode, std::size_t offset, GLsizei records);
 void dispatchCompute(GLuint x, GLuint y, GLuint z);
 
 // Draws and dispatches issued so far on this thread (each call counts one, however many

@@ -81,6 +81,10 @@ void Buffer::bindBase(GLenum target, GLuint index) const {
   glBindBufferBase(target, index, id());
 }
 
+void Buffer::bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const {
+  glBindBufferRange(target, index, id(), GLintptr(offset), GLsizeiptr(bytes));
+}
+
 Texture::Texture(GLenum target, GLenum format, int width, int height, int depth, int levels)
     : target_(target),
       format_(format),

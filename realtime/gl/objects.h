@@ -66,6 +66,8 @@ class Buffer {
   std::size_t bytes() const { return bytes_; }
   void update(std::size_t offset, std::size_t bytes, const void* data);
   void bindBase(GLenum target, GLuint index) const;  // GL_SHADER_STORAGE_BUFFER, GL_UNIFORM_BUFFER
+  // Binds bytes [offset, offset + bytes); offset a multiple of the target's offset alignment.
+  void bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const;
 
  private:
   UniqueName<detail::deleteBuffer> name_;

@@ -183,6 +183,22 @@ GpuScene::GpuScene(const scene::Scene& scene, int width, int height)
   const gpu::Camera block = cameraBlock(camera_, width, height);
   camera_block_ = gl::Buffer(sizeof(block), &block, 0);
   setSceneVertexAttributes<Vertex>(vertex_array_, vertices_);
+
+  std::vector<glm::vec3> positions;
+  positions.reserve(vertices.size());
+  for (const Vertex& v : vertices) positions.push_back(v.position);
+  chunks_ = triangleChunks(positions);
+  // The instance attribute holds 0, 1, 2, … per instance: a record drawn with base instance b
+  // reads b (GL fetches instanced attributes from the base instance on).
+  std::vector<GLuint> indices(gpu::kMaxVertexInstances);
+  for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = GLuint(i);
+  instance_indices_ = gl::Buffer::fromVector(indices, 0);
+  const GLuint vao = vertex_array_.id();
+  glVertexArrayVertexBuffer(vao, 1, instance_indices_.id(), 0, sizeof(GLuint));
+  glVertexArrayBindingDivisor(vao, 1, 1);
+  glVertexArrayAttribIFormat(vao, gpu::kVertexInstanceLocation, 1, GL_UNSIGNED_INT, 0);
+  glVertexArrayAttribBinding(vao, gpu::kVertexInstanceLocation, 1);
+  glEnableVertexArrayAttrib(vao, gpu::kVertexInstanceLocation);
 }
 
 void GpuScene::bindSceneBuffers() const {
@@ -194,6 +210,15 @@ void GpuScene::draw(int instances) const {
   if (vertex_count_ == 0 || instances <= 0) return;
   vertex_array_.bind();
   gl::drawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertex_count_), instances);
+}
+
+void GpuScene::drawRecords(const gl::Buffer& commands, std::size_t first, std::size_t count) const {
+  if (count == 0) return;
+  vertex_array_.bind();
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands.id());
+  gl::multiDrawArraysIndirect(GL_TRIANGLES, first * sizeof(DrawArraysIndirectCommand),
+                              GLsizei(count));
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace gib::rt

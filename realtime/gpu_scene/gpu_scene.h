@@ -7,6 +7,7 @@
 
 #include "realtime/gl/objects.h"
 #include "realtime/gpu_scene/gpu_scene_shared.h"
+#include "realtime/gpu_scene/view_culling.h"
 #include "scene/scene.h"
 
 #include <glm/mat4x4.hpp>
@@ -77,6 +78,12 @@ class GpuScene {
   // Draws every triangle with the scene's vertex attributes (the caller has bound a program);
   // `instances` times in one command (gl_InstanceID tells them apart: layered rendering).
   void draw(int instances = 1) const;
+  // The triangle list's chunks (view_culling.h), in the order draw() draws them.
+  const std::vector<TriangleChunk>& chunks() const { return chunks_; }
+  // Draws the records [first, first + count) of `commands` (DrawArraysIndirectCommand, made by
+  // appendVisibleRuns) in one multi-draw; each record's base instance reaches the vertex shader
+  // as vertex_instance (kVertexInstanceLocation).
+  void drawRecords(const gl::Buffer& commands, std::size_t first, std::size_t count) const;
 
  private:
   const scene::Scene* scene_;
@@ -85,7 +92,8 @@ class GpuScene {
   CameraTransform camera_;
   std::vector<EmitterTriangle> emitters_;
   std::size_t vertex_count_ = 0;
-  gl::Buffer vertices_, materials_, camera_block_;
+  std::vector<TriangleChunk> chunks_;
+  gl::Buffer vertices_, instance_indices_, materials_, camera_block_;
   gl::Texture material_texels_;  // materials_ as the buffer texture shaders read
   gl::VertexArray vertex_array_;
 };

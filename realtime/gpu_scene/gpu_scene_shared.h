@@ -39,6 +39,11 @@ const int kVertexPositionLocation = 0;  // vec3, world space
 const int kVertexNormalLocation = 1;    // vec3, world space, unit, front side
 const int kVertexMaterialLocation = 2;  // uint, index into the materials
 const int kVertexAtlasUvLocation = 3;   // vec2, [0, 1]² of the atlas (AtlasMesh only)
+// uint, per instance: the draw's base instance plus gl_InstanceID (GL 4.5 has no
+// gl_BaseInstance), which a multi-draw's records use to name their view (view_culling.h).
+const int kVertexInstanceLocation = 4;
+// Instances a draw of GpuScene may index through kVertexInstanceLocation.
+const int kMaxVertexInstances = 256;
 
 #ifdef __cplusplus
 static_assert(sizeof(Material) == 48, "std430 struct Material: three vec4");

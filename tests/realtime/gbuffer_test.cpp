@@ -118,5 +118,44 @@ TEST_F(GlTest, ViewsDrawnTogetherAreEachViewDrawnAlone) {
   EXPECT_GT(covered, kColumns * kRows * kTile * kTile / 2);  // views from inside the box see walls
 }
 
+// Each view draws only the triangle chunks its frustum may touch (view_culling.h): the buffer is
+// bit for bit the one every view drawing every triangle gives, on the chamber (3 384 triangles),
+// seen from the six faces of 64 eyes through the hall (the irradiance volume's views), while the
+// views draw well under half of the triangles.
+TEST_F(GlTest, CulledViewsDrawWhatEveryTriangleDraws) {
+  const scene::Scene chamber = scene::loadScene("chamber");
+  const GpuScene gpu(chamber, 64, 64);
+  constexpr int kTile = 16, kEyes = 64, kColumns = 24;
+  std::vector<GBufferView> views;
+  std::size_t vertices_drawn = 0;
+  for (int i = 0; i < 6 * kEyes; ++i) {
+    const int e = i / 6;
+    const glm::vec3 eye(-3.5f + 7.0f * float(e % 4) / 3.0f, 0.5f + 6.0f * float((e / 4) % 4) / 3.0f,
+                        0.5f + 11.0f * float(e / 16) / 3.0f);
+    const glm::mat4 view_projection = cubeFaceViewProjection(eye, i % 6, 0.01f, 40.0f);
+    views.push_back(
+        {view_projection, eye, (i % kColumns) * kTile, (i / kColumns) * kTile, kTile, kTile});
+    std::vector<DrawArraysIndirectCommand> records;
+    appendVisibleRuns(gpu.chunks(), view_projection, 0, records);
+    for (const DrawArraysIndirectCommand& r : records) vertices_drawn += r.count;
+  }
+  const int rows = (int(views.size()) + kColumns - 1) / kColumns;
+  GBuffer culled(kColumns * kTile, rows * kTile), everything(kColumns * kTile, rows * kTile);
+  culled.renderViews(gpu, views);
+  everything.drawViewsWithoutCulling();
+  everything.renderViews(gpu, views);
+  for (const auto& texture : {&GBuffer::position, &GBuffer::normal, &GBuffer::albedo}) {
+    const image::Image a = gl::readTexture((culled.*texture)(), 4);
+    const image::Image b = gl::readTexture((everything.*texture)(), 4);
+    ASSERT_TRUE(std::equal(a.data().begin(), a.data().end(), b.data().begin()));
+  }
+  const image::Image position = gl::readTexture(culled.position(), 4);
+  int covered = 0;
+  for (int y = 0; y < position.height(); ++y)
+    for (int x = 0; x < position.width(); ++x) covered += position.pixel(x, y)[3] >= 0.0f;
+  EXPECT_GT(covered, 6 * kEyes * kTile * kTile / 2);  // the views see the hall
+  EXPECT_LT(double(vertices_drawn), 0.5 * double(views.size() * gpu.vertexCount()));
+}
+
 }  // namespace
 }  // namespace gib::rt

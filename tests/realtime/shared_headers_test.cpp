@@ -111,6 +111,8 @@ TEST_F(SharedHeaders, ConstantsAndFunctionsAreTheSameOnTheGpu) {
       {"kMaxShadowFaces", kMaxShadowFaces},
       {"kMaterialPhong", kMaterialPhong},
       {"kVertexAtlasUvLocation", kVertexAtlasUvLocation},
+      {"kVertexInstanceLocation", kVertexInstanceLocation},
+      {"kMaxVertexInstances", kMaxVertexInstances},
       {"kVsmBlurGroupSize", kVsmBlurGroupSize},
       {"kVsmBlurSegment", kVsmBlurSegment},
       {"kShMaxCoefficients", kShMaxCoefficients},
