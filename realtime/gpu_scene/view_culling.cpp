@@ -29,38 +29,38 @@ std::vector<TriangleChunk> triangleChunks(std::span<const glm::vec3> positions,
   return chunks;
 }
 
-bool boxOutsideFrustum(const glm::mat4& view_projection, const glm::vec3& lo, const glm::vec3& hi) {
+bool boxOutsideFrustum(const glm::mat4& view_projection, const glm::vec3& lo, const glm::vec3& hi,
+                       const glm::vec4& keep) {
   // The clip volume's planes as rows of the matrix: w ± x ≥ 0, w ± y ≥ 0, w ± z ≥ 0 (Gribb and
-  // Hartmann). In double, with a margin of 1e-5 of the plane's size at the box: culling must
-  // never drop a triangle that rasterises, so rounding may only keep too much.
+  // Hartmann), and `keep`. In double, with a margin of 1e-5 of the plane's size at the box:
+  // culling must never drop a triangle that rasterises, so rounding may only keep too much.
   const glm::dmat4 m(view_projection);
   const glm::dvec4 w(m[0][3], m[1][3], m[2][3], m[3][3]);
   const glm::dvec3 box_lo(lo), box_hi(hi);
   const double extent = std::max({std::abs(box_lo.x), std::abs(box_lo.y), std::abs(box_lo.z),
                                   std::abs(box_hi.x), std::abs(box_hi.y), std::abs(box_hi.z), 1.0});
+  auto outside = [&](const glm::dvec4& plane) {
+    // The box's corner farthest along the plane's normal: if even it is behind, all are.
+    const glm::dvec3 corner(plane.x >= 0 ? box_hi.x : box_lo.x, plane.y >= 0 ? box_hi.y : box_lo.y,
+                            plane.z >= 0 ? box_hi.z : box_lo.z);
+    const double distance = plane.x * corner.x + plane.y * corner.y + plane.z * corner.z + plane.w;
+    const double size =
+        (std::abs(plane.x) + std::abs(plane.y) + std::abs(plane.z)) * extent + std::abs(plane.w);
+    return distance < -1e-5 * size;
+  };
   for (int axis = 0; axis < 3; ++axis) {
     const glm::dvec4 row(m[0][axis], m[1][axis], m[2][axis], m[3][axis]);
-    for (double sign : {1.0, -1.0}) {
-      const glm::dvec4 plane = w + sign * row;
-      // The box's corner farthest along the plane's normal: if even it is behind, all are.
-      const glm::dvec3 corner(plane.x >= 0 ? box_hi.x : box_lo.x,
-                              plane.y >= 0 ? box_hi.y : box_lo.y,
-                              plane.z >= 0 ? box_hi.z : box_lo.z);
-      const double distance =
-          plane.x * corner.x + plane.y * corner.y + plane.z * corner.z + plane.w;
-      const double size =
-          (std::abs(plane.x) + std::abs(plane.y) + std::abs(plane.z)) * extent + std::abs(plane.w);
-      if (distance < -1e-5 * size) return true;
-    }
+    if (outside(w + row) || outside(w - row)) return true;
   }
-  return false;
+  return outside(glm::dvec4(keep));
 }
 
 void appendVisibleRuns(std::span<const TriangleChunk> chunks, const glm::mat4& view_projection,
-                       GLuint view, std::vector<DrawArraysIndirectCommand>& commands) {
+                       GLuint view, std::vector<DrawArraysIndirectCommand>& commands,
+                       const glm::vec4& keep) {
   bool in_run = false;
   for (const TriangleChunk& chunk : chunks) {
-    if (boxOutsideFrustum(view_projection, chunk.lo, chunk.hi)) {
+    if (boxOutsideFrustum(view_projection, chunk.lo, chunk.hi, keep)) {
       in_run = false;
       continue;
     }

@@ -34,9 +34,15 @@ inline constexpr int kTrianglesPerChunk = 64;
 std::vector<TriangleChunk> triangleChunks(std::span<const glm::vec3> positions,
                                           int triangles_per_chunk = kTrianglesPerChunk);
 
+// A plane that keeps everything: what a view without a clip plane of its own passes.
+inline constexpr glm::vec4 kKeepEverything{0.0f, 0.0f, 0.0f, 1.0f};
+
 // True when no point of the box [lo, hi] lies in the clip volume of `view_projection` (−w ≤ x,
-// y, z ≤ w): the box lies wholly outside one of its six planes, with a margin against rounding.
-bool boxOutsideFrustum(const glm::mat4& view_projection, const glm::vec3& lo, const glm::vec3& hi);
+// y, z ≤ w) on the side dot(plane, (p, 1)) ≥ 0 of `keep` (a user clip plane the view's draw
+// applies): the box lies wholly outside one of these seven planes, with a margin against
+// rounding.
+bool boxOutsideFrustum(const glm::mat4& view_projection, const glm::vec3& lo, const glm::vec3& hi,
+                       const glm::vec4& keep = kKeepEverything);
 
 // GL's DrawArraysIndirectCommand, the record an indirect multi-draw of arrays reads (GL 4.5
 // §10.4).
@@ -47,9 +53,10 @@ struct DrawArraysIndirectCommand {
   GLuint base_instance = 0;
 };
 
-// Appends one record per run of consecutive chunks not outside the view's frustum, each one
-// instance with base instance `view` (the view's index within its draw).
+// Appends one record per run of consecutive chunks not outside the view's frustum (and `keep`),
+// each one instance with base instance `view` (the view's index within its draw).
 void appendVisibleRuns(std::span<const TriangleChunk> chunks, const glm::mat4& view_projection,
-                       GLuint view, std::vector<DrawArraysIndirectCommand>& commands);
+                       GLuint view, std::vector<DrawArraysIndirectCommand>& commands,
+                       const glm::vec4& keep = kKeepEverything);
 
 }  // namespace gib::rt

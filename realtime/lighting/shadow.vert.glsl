@@ -1,5 +1,6 @@
 // Shadow map generation (book §4.1.1): the scene seen from the light, every layer of a batch in
-// one instanced draw (instance i draws shadow face i into its layer). The layer is written here
+// one multi-draw (records with base instance i draw shadow face i into its layer, each only the
+// triangles the face may see: view_culling.h). The layer is written here
 // where the GL has vertex-shader layer selection (ARB_shader_viewport_layer_array or
 // AMD_vertex_shader_layer), else by shadow.geom.glsl.
 #include "realtime/gpu_scene/vertex.glsl"
@@ -18,9 +19,13 @@ flat out int g_layer;
 out vec3 v_world;
 flat out int v_slot;
 
+// The face's index in the batch: its records' base instance.
+layout(location = kVertexInstanceLocation) in uint vertex_instance;
+
 void main() {
-  ivec4 layer_slot = u_shadow_faces[gl_InstanceID].layer_slot;
-  gl_Position = u_shadow_faces[gl_InstanceID].view_projection * vec4(vertex_position, 1.0);
+  int face = int(vertex_instance);
+  ivec4 layer_slot = u_shadow_faces[face].layer_slot;
+  gl_Position = u_shadow_faces[face].view_projection * vec4(vertex_position, 1.0);
   // A point sample whose cone is at most a hemisphere lights nothing behind the plane through it
   // across its axis, and no lit point's shadow ray crosses that plane: what lies behind is not
   // drawn (half of each side face of a cube around a point on an area light).

@@ -29,6 +29,8 @@ constexpr float kFarMoments[4] = {1e4f, 1e8f, 0, 0};
 // The maps of one kind of a batch may take this much memory (a GPU has far more; llvmpipe keeps
 // them in host memory): 16 cube maps of 512² depth, or 8 with variance moments.
 constexpr double kBatchBudgetBytes = 256.0 * 1024 * 1024;
+// The shadow pass names a face by its records' base instance (kVertexInstanceLocation).
+static_assert(gpu::kMaxShadowFaces <= gpu::kMaxVertexInstances);
 
 // `single`: batches of one sample, whose point-sample maps are one cube map rather than a
 // cube-map array of one (llvmpipe samples a cube map about a tenth faster).
@@ -223,6 +225,24 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
   }
   faces_.update(0, faces.size() * sizeof(gpu::ShadowFace), faces.data());
   faces_.bindBase(GL_UNIFORM_BUFFER, gpu::kShadowFacesBinding);
+  // Each face draws the chunks of triangles its frustum may touch, in front of the plane its
+  // sample clips at (shadow.vert.glsl), through records whose base instance names the face.
+  std::vector<DrawArraysIndirectCommand> draws;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const gpu::GpuLightSample& record = records[std::size_t(faces[f].layer_slot.y)];
+    glm::vec4 keep = kKeepEverything;
+    if (kind == LightSampleKind::kPoint && record.axis.w >= 0.0f) {
+      const glm::vec3 axis(record.axis), position(record.position);
+      keep = glm::vec4(axis, -glm::dot(axis, position));
+    }
+    if (settings_.cull_faces)
+      appendVisibleRuns(scene.chunks(), faces[f].view_projection, GLuint(f), draws, keep);
+    else if (scene.vertexCount() > 0)
+      draws.push_back({GLuint(scene.vertexCount()), 1, 0, GLuint(f)});
+  }
+  const std::size_t draw_bytes = draws.size() * sizeof(DrawArraysIndirectCommand);
+  if (face_draws_.bytes() < draw_bytes) face_draws_ = gl::Buffer(draw_bytes, nullptr);
+  face_draws_.update(0, draw_bytes, draws.data());
 
   Layers& maps = layers(kind);
   {
@@ -244,7 +264,7 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
     maps.depth_program.use();
     glUniform1f(maps.depth_program.uniform("u_far"), far_);
     glEnable(GL_CLIP_DISTANCE0);  // behind a point sample's plane (shadow.vert.glsl)
-    scene.draw(int(faces.size()));
+    scene.drawRecords(face_draws_, 0, draws.size());
     glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }

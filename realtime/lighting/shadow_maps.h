@@ -39,6 +39,9 @@ struct ShadowSettings {
   // The shadow pass selects each instance's layer in the vertex shader where the GL can, else in
   // a geometry shader; true takes the geometry shader anyway (tests compare the two).
   bool layer_from_geometry_shader = false;
+  // Each face draws only the triangle chunks it may see (view_culling.h); false draws every
+  // triangle into every face (tests compare the two).
+  bool cull_faces = true;
   // Samples per batch; 0 chooses by memory (shadowBatchCapacity). Tests set 1, the per-sample
   // passes of before batching, to compare.
   int batch_capacity = 0;
@@ -102,6 +105,9 @@ class ShadowMaps {
   Layers cube_, flat_;  // made on first use: a scene may have one kind only
   gl::Buffer samples_;  // the batch as gpu::GpuLightSample, a uniform block
   gl::Buffer faces_;    // the layers the shadow pass draws, gpu::ShadowFace
+  // The shadow pass's multi-draw records: per face, the triangle chunks it may see
+  // (view_culling.h).
+  gl::Buffer face_draws_;
   int batch_size_ = 0;
   LightSampleKind batch_kind_ = LightSampleKind::kPoint;
 };

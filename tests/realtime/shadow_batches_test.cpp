@@ -10,6 +10,7 @@
 #include "realtime/lighting/light_sample_shared.h"
 #include "realtime/lighting/shadow_maps.h"
 #include "realtime/render_target.h"
+#include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "support/gl_test_context.h"
 
@@ -169,6 +170,31 @@ TEST_F(ShadowBatches, DirectionalLightsAndSkyGiveTheImageOfPerSamplePasses) {
   EXPECT_GT(double(shadowed) / double(open.data().size()), 0.01) << "the occluder casts no shadow";
   EXPECT_LT(largestRelativeDifference(batched, one_by_one), 1e-5);
   EXPECT_LT(largestRelativeDifference(batched, fives), 1e-5);
+}
+
+// Each shadow face draws only the triangle chunks its frustum may touch in front of its sample's
+// clip plane (view_culling.h): the same image as every triangle drawn into every face, bit for
+// bit, on the chamber (3 384 triangles, a spot light's samples: five faces each, clipped) and on
+// the box of occluded lights (all six faces, no clip plane), for each filter.
+TEST_F(ShadowBatches, CulledFacesGiveTheImageOfEveryTriangleInEveryFace) {
+  scene::Scene box = boxOfOccludedLights();
+  box.camera.position = glm::vec3(1.8f);
+  box.camera.look_at = glm::vec3(-2.0f);
+  box.camera.up = glm::normalize(glm::vec3(0.0f, 1.0f, -0.5f));
+  const scene::Scene chamber = scene::loadScene("chamber");
+  for (const scene::Scene* scene : {&chamber, static_cast<const scene::Scene*>(&box)})
+    for (const ShadowFilter filter :
+         {ShadowFilter::kHard, ShadowFilter::kPcf, ShadowFilter::kVariance}) {
+      ShadowSettings settings;
+      settings.filter = filter;
+      settings.size = 128;
+      const image::Image culled = renderDirect(*scene, settings, 4);
+      settings.cull_faces = false;
+      const image::Image everything = renderDirect(*scene, settings, 4);
+      EXPECT_GT(shadowedShare(culled, 0.1), 0.01) << scene->name << ": no shadows to compare";
+      EXPECT_TRUE(std::equal(culled.data().begin(), culled.data().end(), everything.data().begin()))
+          << scene->name << ", filter " << int(filter);
+    }
 }
 
 // The variance shadow map's filter (vsm_blur.comp.glsl: a segment of each line per invocation,
