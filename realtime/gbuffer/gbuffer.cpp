@@ -69,7 +69,7 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
         "#define EXPLICIT_VIEW 1\n", views_from_geometry_shader_, gl::InstanceTarget::kViewport);
   // Views go in draws of up to kMaxGBufferViewsPerDraw, each draw's block of records at an
   // offset the GL lets a uniform block start at; all of them, and every draw's records, are
-  // uploaded at once rather than between draws.
+  // written at once rather than between draws.
   GLint alignment = 256;
   glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
   const std::size_t block_bytes = sizeof(gpu::GBufferViewRecord) * gpu::kMaxGBufferViewsPerDraw;
@@ -94,11 +94,9 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
     }
     first_record[d + 1] = records.size();
   }
-  if (views_.bytes() < blocks.size()) views_ = gl::Buffer(blocks.size(), nullptr);
-  if (view_draws_.bytes() < records.size() * sizeof(DrawArraysIndirectCommand))
-    view_draws_ = gl::Buffer(records.size() * sizeof(DrawArraysIndirectCommand), nullptr);
-  views_.update(0, blocks.size(), blocks.data());
-  view_draws_.update(0, records.size() * sizeof(DrawArraysIndirectCommand), records.data());
+  views_.beginRound({blocks.size(), records.size() * sizeof(DrawArraysIndirectCommand)});
+  const std::size_t blocks_offset = views_.push(blocks);
+  const std::size_t records_offset = views_.push(records);
 
   clearAndSetState();
   views_program_.use();
@@ -110,8 +108,11 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
       glViewportIndexedf(GLuint(i), float(views[v].x), float(views[v].y), float(views[v].width),
                          float(views[v].height));
     }
-    views_.bindRange(GL_UNIFORM_BUFFER, gpu::kGBufferViewsBinding, d * stride, block_bytes);
-    scene.drawRecords(view_draws_, first_record[d], first_record[d + 1] - first_record[d]);
+    views_.bindRange(GL_UNIFORM_BUFFER, gpu::kGBufferViewsBinding, blocks_offset + d * stride,
+                     block_bytes);
+    scene.drawRecords(views_.id(),
+                      records_offset + first_record[d] * sizeof(DrawArraysIndirectCommand),
+                      first_record[d + 1] - first_record[d]);
   }
   glViewport(0, 0, width_, height_);  // every viewport of the array back to the whole buffer
 }

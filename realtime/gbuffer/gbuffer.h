@@ -3,6 +3,7 @@
 #pragma once
 
 #include "realtime/gl/objects.h"
+#include "realtime/gl/stream_buffer.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
 
@@ -69,9 +70,9 @@ class GBuffer {
   gl::Framebuffer framebuffer_;
   gl::Program program_;
   gl::Program views_program_;  // built on first use of renderViews
-  // Every view of renderViews (gpu::GBufferViewRecord), each draw's at an aligned offset, and
-  // the draws' records (DrawArraysIndirectCommand): uploaded once per call.
-  gl::Buffer views_, view_draws_;
+  // Per renderViews call, a round of their own: every view (gpu::GBufferViewRecord), each
+  // draw's block at an offset a uniform block may start at, and the draws' records.
+  gl::StreamBuffer views_;
   bool cull_views_ = true;
   bool views_from_geometry_shader_ = false;
 };

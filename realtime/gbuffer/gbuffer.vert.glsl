@@ -3,10 +3,10 @@
 
 #ifdef EXPLICIT_VIEW
 // Views other than the camera's (GBuffer::renderViews): a draw's records with base instance i
-// draw through view i into viewport i, chosen here where the GL allows, else in gbuffer_views.geom.glsl (which then takes
-// these outputs under g_ names).
-#include "realtime/gl/binding_plan_shared.h"
+// draw through view i into viewport i, chosen here where the GL allows, else in
+// gbuffer_views.geom.glsl (which then takes these outputs under g_ names).
 #include "realtime/gbuffer/gbuffer_views_shared.h"
+#include "realtime/gl/binding_plan_shared.h"
 // The view's index in its draw: the base instance of its multi-draw records (view_culling.h).
 layout(location = kVertexInstanceLocation) in uint vertex_instance;
 layout(std140, binding = kGBufferViewsBinding) uniform GBufferViewBlock {

@@ -212,12 +212,11 @@ void GpuScene::draw(int instances) const {
   gl::drawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertex_count_), instances);
 }
 
-void GpuScene::drawRecords(const gl::Buffer& commands, std::size_t first, std::size_t count) const {
+void GpuScene::drawRecords(GLuint records, std::size_t offset, std::size_t count) const {
   if (count == 0) return;
   vertex_array_.bind();
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands.id());
-  gl::multiDrawArraysIndirect(GL_TRIANGLES, first * sizeof(DrawArraysIndirectCommand),
-                              GLsizei(count));
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, records);
+  gl::multiDrawArraysIndirect(GL_TRIANGLES, offset, GLsizei(count));
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 

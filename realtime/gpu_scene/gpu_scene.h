@@ -80,10 +80,10 @@ class GpuScene {
   void draw(int instances = 1) const;
   // The triangle list's chunks (view_culling.h), in the order draw() draws them.
   const std::vector<TriangleChunk>& chunks() const { return chunks_; }
-  // Draws the records [first, first + count) of `commands` (DrawArraysIndirectCommand, made by
-  // appendVisibleRuns) in one multi-draw; each record's base instance reaches the vertex shader
-  // as vertex_instance (kVertexInstanceLocation).
-  void drawRecords(const gl::Buffer& commands, std::size_t first, std::size_t count) const;
+  // Draws `count` records (DrawArraysIndirectCommand, made by appendVisibleRuns) from byte
+  // `offset` of buffer `records` in one multi-draw; each record's base instance reaches the
+  // vertex shader as vertex_instance (kVertexInstanceLocation).
+  void drawRecords(GLuint records, std::size_t offset, std::size_t count) const;
 
  private:
   const scene::Scene* scene_;

@@ -133,8 +133,6 @@ ShadowMaps::ShadowMaps(const ShadowSettings& settings, const GpuScene& scene, in
   radius_ = std::max(0.5f * glm::length(hi - lo), 1e-3f);
   near_ = 1e-4f * radius_;
   far_ = 4.0f * radius_;  // from any light inside or near the scene to its far side
-  samples_ = gl::Buffer(sizeof(gpu::GpuLightSample) * std::size_t(gpu::kMaxLightBatch), nullptr);
-  faces_ = gl::Buffer(sizeof(gpu::ShadowFace) * std::size_t(gpu::kMaxShadowFaces), nullptr);
 }
 
 ShadowMaps::Layers& ShadowMaps::layers(LightSampleKind kind) {
@@ -199,8 +197,6 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
         kind == LightSampleKind::kPoint ? glm::mat4(1.0f) : flatViewProjection(s);
     records.push_back(toGpuLightSample(s, view_projection));
   }
-  samples_.update(0, records.size() * sizeof(gpu::GpuLightSample), records.data());
-  samples_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding);
 
   // The layers to draw: every cube face a point sample can light (the others are cleared, not
   // drawn), or each directional sample's map.
@@ -223,8 +219,6 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
                        glm::ivec4(6 * slot + face, slot, drawn.x, drawn.y)});
     }
   }
-  faces_.update(0, faces.size() * sizeof(gpu::ShadowFace), faces.data());
-  faces_.bindBase(GL_UNIFORM_BUFFER, gpu::kShadowFacesBinding);
   // Each face draws the chunks of triangles its frustum may touch, in front of the plane its
   // sample clips at (shadow.vert.glsl), through records whose base instance names the face.
   std::vector<DrawArraysIndirectCommand> draws;
@@ -240,9 +234,16 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
     else if (scene.vertexCount() > 0)
       draws.push_back({GLuint(scene.vertexCount()), 1, 0, GLuint(f)});
   }
-  const std::size_t draw_bytes = draws.size() * sizeof(DrawArraysIndirectCommand);
-  if (face_draws_.bytes() < draw_bytes) face_draws_ = gl::Buffer(draw_bytes, nullptr);
-  face_draws_.update(0, draw_bytes, draws.data());
+  // The uniform blocks are bound at their declared sizes, whatever part of them a batch fills.
+  constexpr std::size_t kSamplesBlock = sizeof(gpu::GpuLightSample) * gpu::kMaxLightBatch;
+  constexpr std::size_t kFacesBlock = sizeof(gpu::ShadowFace) * gpu::kMaxShadowFaces;
+  stream_.beginRound(
+      {kSamplesBlock, kFacesBlock, draws.size() * sizeof(DrawArraysIndirectCommand)});
+  samples_offset_ = stream_.push(records, kSamplesBlock);
+  stream_.bindRange(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding, samples_offset_, kSamplesBlock);
+  const std::size_t faces_offset = stream_.push(faces, kFacesBlock);
+  stream_.bindRange(GL_UNIFORM_BUFFER, gpu::kShadowFacesBinding, faces_offset, kFacesBlock);
+  const std::size_t draws_offset = stream_.push(draws);
 
   Layers& maps = layers(kind);
   {
@@ -264,7 +265,7 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
     maps.depth_program.use();
     glUniform1f(maps.depth_program.uniform("u_far"), far_);
     glEnable(GL_CLIP_DISTANCE0);  // behind a point sample's plane (shadow.vert.glsl)
-    scene.drawRecords(face_draws_, 0, draws.size());
+    scene.drawRecords(stream_.id(), draws_offset, draws.size());
     glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
@@ -320,7 +321,8 @@ const gl::Texture& ShadowMaps::lookupMaps() const {
 
 void ShadowMaps::bindForLookup(const gl::Program& program) const {
   lookupMaps().bind(gpu::kShadowMapUnit);
-  samples_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding);
+  stream_.bindRange(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding, samples_offset_,
+                    sizeof(gpu::GpuLightSample) * gpu::kMaxLightBatch);
   glProgramUniform1i(program.id(), program.uniform("u_light_sample_count"), batch_size_);
 }
 

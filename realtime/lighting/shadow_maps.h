@@ -8,6 +8,7 @@
 #pragma once
 
 #include "realtime/gl/objects.h"
+#include "realtime/gl/stream_buffer.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/lighting/light_samples.h"
 #include "realtime/pass_declarations.h"
@@ -103,11 +104,11 @@ class ShadowMaps {
   glm::vec3 centre_;  // bounding sphere of the scene
   float radius_;
   Layers cube_, flat_;  // made on first use: a scene may have one kind only
-  gl::Buffer samples_;  // the batch as gpu::GpuLightSample, a uniform block
-  gl::Buffer faces_;    // the layers the shadow pass draws, gpu::ShadowFace
-  // The shadow pass's multi-draw records: per face, the triangle chunks it may see
-  // (view_culling.h).
-  gl::Buffer face_draws_;
+  // Per batch, a round of their own: the samples (gpu::GpuLightSample, a uniform block at
+  // samples_offset_), the layers the shadow pass draws (gpu::ShadowFace) and its multi-draw
+  // records, per face the triangle chunks it may see (view_culling.h).
+  gl::StreamBuffer stream_;
+  std::size_t samples_offset_ = 0;
   int batch_size_ = 0;
   LightSampleKind batch_kind_ = LightSampleKind::kPoint;
 };

@@ -142,8 +142,6 @@ void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height
   indirect_framebuffer_.attachColor(0, indirect_);
   indirect_framebuffer_.setDrawBuffers(1);
   indirect_framebuffer_.checkComplete();
-  selected_panes_ =
-      gl::Buffer(sizeof(gpu::SelectedPane) * std::size_t(settings_.clusters), nullptr);
   combine_pass_ = gl::FullScreenPass("realtime/techniques/light_path_map/combine.frag.glsl");
   composite_pass_ = gl::FullScreenPass("realtime/techniques/light_path_map/composite.frag.glsl");
   view_program_ =
@@ -308,8 +306,11 @@ void LightPathMapTechnique::selectPanes() {
     selected.push_back({cluster_weights_[std::size_t(c)] / float(n), c});
   }
   selected_count_ = int(selected.size());
-  if (!selected.empty())
-    selected_panes_.update(0, selected.size() * sizeof(gpu::SelectedPane), selected.data());
+  // A frame's panes, a round of their own (at least one record, so that the range bound for
+  // a frame without any is not empty).
+  selected_bytes_ = std::max<std::size_t>(selected.size(), 1) * sizeof(gpu::SelectedPane);
+  selected_panes_.beginRound({selected_bytes_});
+  selected_offset_ = selected_panes_.push(selected, selected_bytes_);
 }
 
 void LightPathMapTechnique::renderIndirect(gl::PassProfiler& profiler) {
@@ -327,7 +328,8 @@ void LightPathMapTechnique::renderIndirect(gl::PassProfiler& profiler) {
     combine_pass_.use();
     glUniform1i(combine_pass_.program().uniform("u_selected_count"), selected_count_);
     panes_.bind(gpu::kPanesUnit);
-    selected_panes_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSelectedPanesBinding);
+    selected_panes_.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kSelectedPanesBinding,
+                              selected_offset_, selected_bytes_);
     combine_pass_.draw();
   }
   auto pass = profiler.pass(kIndirectViewPass);

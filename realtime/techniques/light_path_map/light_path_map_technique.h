@@ -16,6 +16,7 @@
 #include "realtime/atlas/atlas_textures.h"
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/fullscreen_pass.h"
+#include "realtime/gl/stream_buffer.h"
 #include "realtime/lighting/direct_lighting.h"
 #include "realtime/render_target.h"
 #include "realtime/technique.h"
@@ -117,7 +118,8 @@ class LightPathMapTechnique final : public Technique {
   gl::FullScreenPass entry_point_pass_, entry_directional_pass_;
   gl::Texture panes_, indirect_;
   gl::Framebuffer indirect_framebuffer_;
-  gl::Buffer selected_panes_;
+  gl::StreamBuffer selected_panes_;  // the frame's gpu::SelectedPane records
+  std::size_t selected_offset_ = 0, selected_bytes_ = 0;
   int selected_count_ = 0;
   std::vector<glm::vec3> entry_irradiance_, cluster_weights_;
   gl::FullScreenPass combine_pass_, composite_pass_;
