@@ -32,10 +32,12 @@ const int kTechniqueStorageBindingCount = 5;
 const int kTestFirstStorageBinding = 6;  // 6, 7: tests' query and result buffers
 
 // Uniform buffer bindings.
-const int kCameraBinding = 0;        // gpu_scene/: the camera block
-const int kLightSamplesBinding = 1;  // lighting/: the current batch of light samples
-const int kShadowFacesBinding = 2;   // lighting/: the layers a batch's shadow pass draws
-const int kGBufferViewsBinding = 3;  // gbuffer/: the views of one instanced G-buffer draw
+const int kCameraBinding = 0;                 // gpu_scene/: the camera block
+const int kLightSamplesBinding = 1;           // lighting/: the current batch of light samples
+const int kShadowFacesBinding = 2;            // lighting/: the layers a batch's shadow pass draws
+const int kGBufferViewsBinding = 3;           // gbuffer/: the views of one instanced G-buffer draw
+const int kTechniqueFirstUniformBinding = 4;  // 4, 5: a technique's own blocks
+const int kTechniqueUniformBindingCount = 2;
 
 #ifdef __cplusplus
 }  // namespace gib::rt::gpu

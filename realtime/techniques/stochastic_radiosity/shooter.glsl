@@ -2,7 +2,11 @@
 // normal by u_shooter_lift (so that surfaces meeting it at a corner are not cut by the near
 // plane of its view), and an orthonormal basis (t, b, n) with n the shooter's normal.
 #include "realtime/atlas/atlas_maps.glsl"
-#include "realtime/techniques/stochastic_radiosity/selection.glsl"
+#include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
+
+layout(std140, binding = kShooterBlockBinding) uniform ShooterBlock {
+  Shooter u_shooter;  // the selection's first record
+};
 
 uniform float u_shooter_lift;  // world units
 
@@ -23,7 +27,7 @@ void orthonormalBasis(vec3 n, out vec3 t, out vec3 b) {
 
 ShooterFrame shooterFrame() {
   ShooterFrame f;
-  ivec2 texel = shooters[0].texel;
+  ivec2 texel = u_shooter.texel;
   f.valid = texel.x >= 0;
   if (!f.valid) texel = ivec2(0);
   f.n = texelFetch(u_atlas_normal, texel, 0).xyz;

@@ -20,6 +20,10 @@ struct Shooter {
 };
 
 const int kShootersBinding = kTechniqueFirstStorageBinding + 0;
+// The first selection again, as a std140 uniform block (the same layout) for the passes that
+// shoot from it: a uniform read costs llvmpipe one load for all lanes, a storage buffer read a
+// load per lane.
+const int kShooterBlockBinding = kTechniqueFirstUniformBinding + 0;
 
 // Texture units.
 const int kRadiositySourceUnit = kTechniqueFirstUnit + 0;     // L^e plus injected direct light
@@ -37,5 +41,6 @@ const int kDescentGroupSize = 64;
 #ifdef __cplusplus
 static_assert(sizeof(Shooter) == 32, "std430 struct Shooter");
 static_assert(kRadiosityPowerUnit < kTechniqueFirstUnit + kTechniqueUnitCount);
+static_assert(kShooterBlockBinding < kTechniqueFirstUniformBinding + kTechniqueUniformBindingCount);
 }  // namespace gib::rt::gpu
 #endif

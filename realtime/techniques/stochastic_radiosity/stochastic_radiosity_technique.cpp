@@ -111,7 +111,7 @@ void StochasticRadiosityTechnique::runUpdatePass() {
   source_.bind(gpu::kRadiositySourceUnit);
   reflected_[std::size_t(current_)].bind(gpu::kRadiosityReflectedUnit);
   visibility_->bindForLookup();
-  selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kShootersBinding);
+  selection_->bindShooter();
   update_pass_.draw();
   current_ = next;
 }
@@ -125,7 +125,7 @@ void StochasticRadiosityTechnique::step(gl::PassProfiler& profiler) {
   {
     auto pass = profiler.pass(kVisibilityPass);
     atlas_->bind();
-    selection_->shooters().bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kShootersBinding);
+    selection_->bindShooter();
     visibility_->render(*mesh_);
   }
   {

@@ -77,7 +77,7 @@ void TexelSelection::selectOnGpu(const std::vector<float>& u) {
   const GLuint groups = GLuint((u.size() + gpu::kDescentGroupSize - 1) / gpu::kDescentGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   gl::dispatchCompute(groups, 1, 1);  // every level in one pass
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT);
 }
 
 void TexelSelection::selectOnCpu(const std::vector<float>& u) {

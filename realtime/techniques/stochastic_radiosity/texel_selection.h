@@ -40,7 +40,10 @@ class TexelSelection {
   void buildPyramid() const;
   // Selects one texel per value of `u` (each in [0, 1)) into the Shooters buffer.
   void select(const std::vector<float>& u);
-  const gl::Buffer& shooters() const { return shooters_; }
+  // Binds the first selection as the uniform block the shooting passes read (shooter.glsl).
+  void bindShooter() const {
+    shooters_.bindRange(GL_UNIFORM_BUFFER, gpu::kShooterBlockBinding, 0, sizeof(gpu::Shooter));
+  }
   // Reads the first `count` selections back (tests, and nothing else: it stalls the pipeline).
   std::vector<gpu::Shooter> readSelections(int count) const;
 

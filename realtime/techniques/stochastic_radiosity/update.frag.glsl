@@ -7,7 +7,7 @@
 // and Φ = Σ lum(L_i)·A_i (Barsi & Jakab §3.1),
 //   L_j·A_j / p_j = L_j·Φ / lum(L_j),
 // the paper's L_shoot: the shooter's colour scaled to the total power. We divide by exactly the
-// power value the selection used (Shooters[0].power), so that the estimate stays unbiased even
+// power value the selection used (u_shooter.power), so that the estimate stays unbiased even
 // though the power map is being rewritten by this pass.
 //
 // The geometric factor is the book's cos⁺θx·cos⁺θy / |x − y|², except that |x − y|² becomes
@@ -61,7 +61,7 @@ void main() {
     float cos_receiver = -dot(normal_area.xyz, w);
     if (cos_shooter > 0.0 && cos_receiver > 0.0 &&
         visibleFromShooter(shooterLocal(shooter, position.xyz), cos_receiver)) {
-      Shooter s = shooters[0];
+      Shooter s = u_shooter;
       vec3 shooter_radiance = texelFetch(u_source, s.texel, 0).rgb + texelFetch(u_reflected, s.texel, 0).rgb;
       float shooter_area = texelFetch(u_atlas_normal, s.texel, 0).w;
       vec3 shot = shooter_radiance * (shooter_area * s.total_power / s.power);  // L_j·A_j / p_j
