@@ -1,7 +1,7 @@
 // The views of GBuffer::renderViews as its vertex shader reads them (a uniform block, std140):
-// one instanced draw rasterises the scene into up to kMaxGBufferViewsPerDraw rectangles of the
-// G-buffer (the irradiance volume's probe cube faces), instance i through view i into viewport i
-// of the viewport array, instead of one draw per view.
+// one multi-draw rasterises the scene into up to kMaxGBufferViewsPerDraw rectangles of the
+// G-buffer (the irradiance volume's probe cube faces), records with base instance i through view i
+// into viewport i of the viewport array, instead of one draw per view.
 #pragma once
 #include "realtime/gl/host_device_shared.h"
 

@@ -2,7 +2,8 @@
 // that one pass can light a point with every sample of the batch: a cube of 90° faces around a
 // point sample (the book's "six spot lights" for omnidirectional lights; faces the sample cannot
 // light are cleared, not drawn), or an orthographic map over the scene's bounding sphere for a
-// directional sample. Every face of a batch is drawn by one instanced draw (layered rendering).
+// directional sample. Every face of a batch is drawn by one multi-draw (layered rendering), each
+// face only the triangle chunks it may see (view_culling.h).
 // Hard and PCF maps hold depth and are read with hardware comparison; a variance shadow map holds
 // (d, d²), box-filtered by a compute pass over the whole batch.
 #pragma once
