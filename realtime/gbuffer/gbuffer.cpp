@@ -80,17 +80,13 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
   std::vector<std::byte> blocks(draws * stride);
   std::vector<DrawArraysIndirectCommand> records;
   std::vector<std::size_t> first_record(draws + 1, 0);
-  const TriangleChunk everything{0, GLsizei(scene.vertexCount()), glm::vec3(0.0f), glm::vec3(0.0f)};
   for (std::size_t d = 0; d < draws; ++d) {
     for (std::size_t i = 0; i < std::size_t(gpu::kMaxGBufferViewsPerDraw); ++i) {
       const std::size_t v = d * gpu::kMaxGBufferViewsPerDraw + i;
       if (v >= views.size()) break;
       const gpu::GBufferViewRecord record{views[v].view_projection, glm::vec4(views[v].eye, 1.0f)};
       std::memcpy(blocks.data() + d * stride + i * sizeof(record), &record, sizeof(record));
-      if (cull_views_)
-        appendVisibleRuns(scene.chunks(), views[v].view_projection, GLuint(i), records);
-      else if (everything.vertex_count > 0)
-        records.push_back({GLuint(everything.vertex_count), 1, 0, GLuint(i)});
+      scene.appendViewRecords(views[v].view_projection, GLuint(i), cull_views_, records);
     }
     first_record[d + 1] = records.size();
   }

@@ -212,6 +212,15 @@ void GpuScene::draw(int instances) const {
   gl::drawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertex_count_), instances);
 }
 
+void GpuScene::appendViewRecords(const glm::mat4& view_projection, GLuint view, bool cull,
+                                 std::vector<DrawArraysIndirectCommand>& records,
+                                 const glm::vec4& keep) const {
+  if (cull)
+    appendVisibleRuns(chunks_, view_projection, view, records, keep);
+  else if (vertex_count_ > 0)
+    records.push_back({GLuint(vertex_count_), 1, 0, view});
+}
+
 void GpuScene::drawRecords(GLuint records, std::size_t offset, std::size_t count) const {
   if (count == 0) return;
   vertex_array_.bind();

@@ -80,6 +80,12 @@ class GpuScene {
   void draw(int instances = 1) const;
   // The triangle list's chunks (view_culling.h), in the order draw() draws them.
   const std::vector<TriangleChunk>& chunks() const { return chunks_; }
+  // Appends the records that draw the scene into one view of a multi-draw, `view` its index
+  // there: with `cull`, the runs of chunks its frustum (and `keep`) may touch; else every
+  // triangle (tests compare the two).
+  void appendViewRecords(const glm::mat4& view_projection, GLuint view, bool cull,
+                         std::vector<DrawArraysIndirectCommand>& records,
+                         const glm::vec4& keep = kKeepEverything) const;
   // Draws `count` records (DrawArraysIndirectCommand, made by appendVisibleRuns) from byte
   // `offset` of buffer `records` in one multi-draw; each record's base instance reaches the
   // vertex shader as vertex_instance (kVertexInstanceLocation).

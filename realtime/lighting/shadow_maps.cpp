@@ -229,10 +229,7 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
       const glm::vec3 axis(record.axis), position(record.position);
       keep = glm::vec4(axis, -glm::dot(axis, position));
     }
-    if (settings_.cull_faces)
-      appendVisibleRuns(scene.chunks(), faces[f].view_projection, GLuint(f), draws, keep);
-    else if (scene.vertexCount() > 0)
-      draws.push_back({GLuint(scene.vertexCount()), 1, 0, GLuint(f)});
+    scene.appendViewRecords(faces[f].view_projection, GLuint(f), settings_.cull_faces, draws, keep);
   }
   // The uniform blocks are bound at their declared sizes, whatever part of them a batch fills.
   constexpr std::size_t kSamplesBlock = sizeof(gpu::GpuLightSample) * gpu::kMaxLightBatch;
