@@ -68,13 +68,10 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
          "realtime/gbuffer/gbuffer.frag.glsl"},
         "#define EXPLICIT_VIEW 1\n", views_from_geometry_shader_, gl::InstanceTarget::kViewport);
   // Views go in draws of up to kMaxGBufferViewsPerDraw, each draw's block of records at an
-  // offset the GL lets a uniform block start at; all of them, and every draw's records, are
-  // written at once rather than between draws.
-  GLint alignment = 256;
-  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  // offset a uniform block may start at; all of them, and every draw's records, are written at
+  // once rather than between draws.
   const std::size_t block_bytes = sizeof(gpu::GBufferViewRecord) * gpu::kMaxGBufferViewsPerDraw;
-  const std::size_t stride =
-      (block_bytes + std::size_t(alignment) - 1) / std::size_t(alignment) * std::size_t(alignment);
+  const std::size_t stride = views_.alignedSize(block_bytes);
   const std::size_t draws =
       (views.size() + gpu::kMaxGBufferViewsPerDraw - 1) / gpu::kMaxGBufferViewsPerDraw;
   std::vector<std::byte> blocks(draws * stride);

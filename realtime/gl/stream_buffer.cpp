@@ -65,8 +65,14 @@ void StreamBuffer::release() {
   mapping_ = nullptr;
 }
 
-std::size_t StreamBuffer::alignedSize(std::size_t bytes) const {
-  return (bytes + alignment_ - 1) / alignment_ * alignment_;
+std::size_t StreamBuffer::alignment() const {
+  if (alignment_ == 0) {
+    GLint uniform = 0, storage = 0;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniform);
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &storage);
+    alignment_ = std::size_t(std::max({uniform, storage, GLint(16)}));
+  }
+  return alignment_;
 }
 
 void StreamBuffer::allocate(std::size_t region_bytes, int regions) {
@@ -84,12 +90,6 @@ void StreamBuffer::allocate(std::size_t region_bytes, int regions) {
 }
 
 void StreamBuffer::beginRound(std::initializer_list<std::size_t> push_bytes) {
-  if (alignment_ == 0) {
-    GLint uniform = 0, storage = 0;
-    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniform);
-    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &storage);
-    alignment_ = std::size_t(std::max({uniform, storage, GLint(16)}));
-  }
   std::size_t needed = 0;
   for (std::size_t bytes : push_bytes) needed += alignedSize(bytes);
   if (!buffer_.id()) {

@@ -55,22 +55,28 @@ class StreamBuffer {
     buffer_.bindRange(target, index, offset, bytes);
   }
 
-  // The region the current round writes, where region r starts, bytes per region, regions in
-  // the ring, and the offsets pushes are aligned to (tests).
+  // What pushes start at: a multiple of the larger of the GL's uniform and storage block offset
+  // alignments (asked once). A caller laying out several blocks in one push spaces them so.
+  std::size_t alignment() const;
+  std::size_t alignedSize(std::size_t bytes) const {
+    return (bytes + alignment() - 1) / alignment() * alignment();
+  }
+
+  // The region the current round writes, where region r starts, bytes per region and regions in
+  // the ring (tests).
   int currentRegion() const { return current_; }
   std::size_t regionOffset(int region) const { return std::size_t(region) * region_bytes_; }
   std::size_t regionBytes() const { return region_bytes_; }
   int regions() const { return regions_; }
-  std::size_t alignment() const { return alignment_; }
 
  private:
-  std::size_t alignedSize(std::size_t bytes) const;
   void allocate(std::size_t region_bytes, int regions);
   void release();
 
   Buffer buffer_;
   std::byte* mapping_ = nullptr;
-  std::size_t region_bytes_ = 0, alignment_ = 0;
+  std::size_t region_bytes_ = 0;
+  mutable std::size_t alignment_ = 0;     // 0 until first asked
   std::size_t head_ = 0, round_end_ = 0;  // the next push and the end of the current round
   int current_ = -1, regions_ = kInitialRegions;
   std::vector<GLsync> fences_;  // per region: set when it was left, or null

@@ -48,6 +48,14 @@ void setupDepthTexture(gl::Texture& texture, bool compare_filtered) {
   texture.setFilter(filter, filter);
 }
 
+// What the shadow pass keeps of the scene for a sample (shadow.vert.glsl clips the rest): for a
+// point sample whose cone is at most a hemisphere, the half-space in front of the plane through
+// it across its axis, dot(plane, (p, 1)) ≥ 0; else everything.
+glm::vec4 keptHalfSpace(const LightSample& sample) {
+  if (sample.kind != LightSampleKind::kPoint || sample.cos_cone < 0.0f) return kKeepEverything;
+  return glm::vec4(sample.axis, -glm::dot(sample.axis, sample.position));
+}
+
 // The texels of cube face `face` around point sample `sample` that can hold anything drawn, as
 // packed column and row ranges (ShadowFace::layer_slot.zw): all of them, or, where the shadow
 // pass clips what lies behind the sample's plane (shadow.vert.glsl: a cone of at most a
@@ -57,11 +65,12 @@ void setupDepthTexture(gl::Texture& texture, bool compare_filtered) {
 // u·(s·a) + v·(t·a) + f·a ≥ 0 for the sample's axis a.
 glm::ivec2 drawnTexels(const LightSample& sample, int face, int size, int margin) {
   const int everything = gpu::packTexelRange(0, size);
-  if (sample.cos_cone < 0.0f) return {everything, everything};
+  const glm::vec4 kept = keptHalfSpace(sample);
+  if (kept == kKeepEverything) return {everything, everything};
   const glm::vec3 f = kCubeFaceAxis[face];
   const glm::vec3 s = glm::normalize(glm::cross(f, kCubeFaceUp[face]));
   const glm::vec3 t = glm::cross(s, f);
-  const glm::vec3 a = glm::normalize(sample.axis);
+  const glm::vec3 a = glm::normalize(glm::vec3(kept));
   auto front = [&](glm::vec2 p) {
     return p.x * glm::dot(s, a) + p.y * glm::dot(t, a) + glm::dot(f, a);
   };
@@ -222,15 +231,9 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
   // Each face draws the chunks of triangles its frustum may touch, in front of the plane its
   // sample clips at (shadow.vert.glsl), through records whose base instance names the face.
   std::vector<DrawArraysIndirectCommand> draws;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const gpu::GpuLightSample& record = records[std::size_t(faces[f].layer_slot.y)];
-    glm::vec4 keep = kKeepEverything;
-    if (kind == LightSampleKind::kPoint && record.axis.w >= 0.0f) {
-      const glm::vec3 axis(record.axis), position(record.position);
-      keep = glm::vec4(axis, -glm::dot(axis, position));
-    }
-    scene.appendViewRecords(faces[f].view_projection, GLuint(f), settings_.cull_faces, draws, keep);
-  }
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    scene.appendViewRecords(faces[f].view_projection, GLuint(f), settings_.cull_faces, draws,
+                            keptHalfSpace(batch[std::size_t(faces[f].layer_slot.y)]));
   // The uniform blocks are bound at their declared sizes, whatever part of them a batch fills.
   constexpr std::size_t kSamplesBlock = sizeof(gpu::GpuLightSample) * gpu::kMaxLightBatch;
   constexpr std::size_t kFacesBlock = sizeof(gpu::ShadowFace) * gpu::kMaxShadowFaces;
