@@ -4,6 +4,7 @@
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -29,38 +30,60 @@ std::vector<TriangleChunk> triangleChunks(std::span<const glm::vec3> positions,
   return chunks;
 }
 
-bool boxOutsideFrustum(const glm::mat4& view_projection, const glm::vec3& lo, const glm::vec3& hi,
-                       const glm::vec4& keep) {
-  // The clip volume's planes as rows of the matrix: w ± x ≥ 0, w ± y ≥ 0, w ± z ≥ 0 (Gribb and
-  // Hartmann), and `keep`. In double, with a margin of 1e-5 of the plane's size at the box:
-  // culling must never drop a triangle that rasterises, so rounding may only keep too much.
+namespace {
+
+// The seven planes a view keeps, as (n, d) with n·p + d ≥ 0 inside: the clip volume's as rows of
+// the matrix, w ± x ≥ 0, w ± y ≥ 0, w ± z ≥ 0 (Gribb and Hartmann), and `keep`. In double, and
+// made once per view rather than once per chunk.
+struct ViewPlanes {
+  std::array<glm::dvec4, 7> planes;
+};
+
+ViewPlanes viewPlanes(const glm::mat4& view_projection, const glm::vec4& keep) {
   const glm::dmat4 m(view_projection);
   const glm::dvec4 w(m[0][3], m[1][3], m[2][3], m[3][3]);
+  ViewPlanes view;
+  for (int axis = 0; axis < 3; ++axis) {
+    const glm::dvec4 row(m[0][axis], m[1][axis], m[2][axis], m[3][axis]);
+    view.planes[std::size_t(2 * axis)] = w + row;
+    view.planes[std::size_t(2 * axis + 1)] = w - row;
+  }
+  view.planes[6] = glm::dvec4(keep);
+  return view;
+}
+
+// With a margin of 1e-5 of the plane's size at the box: culling must never drop a triangle that
+// rasterises, so rounding may only keep too much.
+bool boxOutside(const ViewPlanes& view, const glm::vec3& lo, const glm::vec3& hi) {
   const glm::dvec3 box_lo(lo), box_hi(hi);
   const double extent = std::max({std::abs(box_lo.x), std::abs(box_lo.y), std::abs(box_lo.z),
                                   std::abs(box_hi.x), std::abs(box_hi.y), std::abs(box_hi.z), 1.0});
-  auto outside = [&](const glm::dvec4& plane) {
+  for (const glm::dvec4& plane : view.planes) {
     // The box's corner farthest along the plane's normal: if even it is behind, all are.
     const glm::dvec3 corner(plane.x >= 0 ? box_hi.x : box_lo.x, plane.y >= 0 ? box_hi.y : box_lo.y,
                             plane.z >= 0 ? box_hi.z : box_lo.z);
     const double distance = plane.x * corner.x + plane.y * corner.y + plane.z * corner.z + plane.w;
     const double size =
         (std::abs(plane.x) + std::abs(plane.y) + std::abs(plane.z)) * extent + std::abs(plane.w);
-    return distance < -1e-5 * size;
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    const glm::dvec4 row(m[0][axis], m[1][axis], m[2][axis], m[3][axis]);
-    if (outside(w + row) || outside(w - row)) return true;
+    if (distance < -1e-5 * size) return true;
   }
-  return outside(glm::dvec4(keep));
+  return false;
+}
+
+}  // namespace
+
+bool boxOutsideFrustum(const glm::mat4& view_projection, const glm::vec3& lo, const glm::vec3& hi,
+                       const glm::vec4& keep) {
+  return boxOutside(viewPlanes(view_projection, keep), lo, hi);
 }
 
 void appendVisibleRuns(std::span<const TriangleChunk> chunks, const glm::mat4& view_projection,
                        GLuint view, std::vector<DrawArraysIndirectCommand>& commands,
                        const glm::vec4& keep) {
+  const ViewPlanes planes = viewPlanes(view_projection, keep);
   bool in_run = false;
   for (const TriangleChunk& chunk : chunks) {
-    if (boxOutsideFrustum(view_projection, chunk.lo, chunk.hi, keep)) {
+    if (boxOutside(planes, chunk.lo, chunk.hi)) {
       in_run = false;
       continue;
     }
