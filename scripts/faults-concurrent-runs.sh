@@ -2,9 +2,9 @@
 # Concurrent runs on one reference store and one history database (docs/reliability.md,
 # "Faults"): in each round, N `gibench run` processes start at once on a suite whose jobs share
 # references, with a fresh store. Checks that every run completes (no "database is locked"), that
-# each reference is rendered by exactly one process (the others wait for it and read it), that
-# the database records every run, and that nothing is left damaged
-# (scripts/check-run-integrity.py).
+# each run's results name the suite's five references, each rendered by exactly one process (the
+# others wait for it and read it), that the database records every run, and that nothing is left
+# damaged (scripts/check-run-integrity.py).
 #
 #   scripts/faults-concurrent-runs.sh GIBENCH [--runs N] [--rounds R] [--work DIR]
 #
@@ -29,6 +29,7 @@ faults_work_dir concurrent
 suite="$work/concurrent.toml"
 # Four cases, five references: the Cornell box's direct-light and full references are each
 # needed by two jobs (a technique's reference and its full reference, and the reference job).
+references=5
 cat >"$suite" <<'TOML'
 name = "concurrent"
 [defaults]
@@ -72,26 +73,39 @@ for round in $(seq "$rounds"); do
   if grep -l 'database is locked' "$dir"/*.stderr >/dev/null 2>&1; then
     problem="$problem; 'database is locked'"
   fi
-  # Renders per store key, from the runs' results: a reference a run rendered is not a store hit.
-  renders=$(python3 - "$dir" "$runs" <<'PY'
+  # Renders per store key, from the runs' results (a reference a run rendered is not a store
+  # hit); then what is wrong with the keys: other than the suite's references, or not the same
+  # in every run.
+  check=$(python3 - "$dir" "$runs" "$references" <<'PY'
 import collections, json, sys
-directory, runs = sys.argv[1], int(sys.argv[2])
+directory, runs, references = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 count = collections.Counter()
-keys = set()
+keys_of_run = {}
 for k in range(1, runs + 1):
     try:
         results = json.load(open(f"{directory}/out-{k}/results.json"))
     except OSError:
         continue
+    keys_of_run[k] = set()
     for job in results["jobs"]:
         for field in ("reference", "full_reference"):
             reference = job.get(field)
             if reference:
-                keys.add(reference["key"])
+                keys_of_run[k].add(reference["key"])
                 count[reference["key"]] += 0 if reference["store_hit"] else 1
-print(" ".join(str(count[key]) for key in sorted(keys)))
+print(" ".join(str(count[key]) for key in sorted(count)))
+problems = []
+if len(count) != references:
+    problems.append(f"the results name {len(count)} references, not {references}")
+differing = [k for k, keys in keys_of_run.items() if keys != set(count)]
+if differing:
+    problems.append(f"runs {differing} name only some of them")
+print("; ".join(problems))
 PY
 )
+  renders=$(sed -n 1p <<<"$check")
+  keys_problem=$(sed -n 2p <<<"$check")
+  [ -z "$keys_problem" ] || problem="$problem; $keys_problem"
   for n in $renders; do
     if [ "$n" -ne 1 ]; then problem="$problem; a reference rendered $n times (per key: $renders)"; break; fi
   done

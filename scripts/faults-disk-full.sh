@@ -10,24 +10,35 @@
 #     (scripts/check-run-integrity.py: JSON whole, EXRs whole, `store verify`, the database's
 #     integrity check);
 #   - the same command without the cap resumes and completes, with the same metric values as an
-#     uninterrupted run.
+#     uninterrupted run;
+#   - the cap stopped at least one run (else nothing above was tested), and one at each place
+#     --expect-stops names: `job` (a job's files), `store` (a reference-store entry), `history`
+#     (the history database), `report` (a report page), `results` (results.json, results.csv).
 #
-#   scripts/faults-disk-full.sh GIBENCH [--limits "2 4 8 16 32"] [--work DIR]
+#   scripts/faults-disk-full.sh GIBENCH [--limits "2 4 8 16 32"] [--expect-stops "job store …"]
+#       [--work DIR]
 #
-# Prints one line per case and a total; exits 1 when any case fails, 2 on bad arguments.
+# Prints one line per case and a total with the stops per place; exits 1 when any case fails or
+# an expected place saw no stop, 2 on bad arguments.
 set -euo pipefail
 script=faults-disk-full.sh
 source "$(dirname "$0")/faults-common.sh"
 faults_gibench "$@"
 shift
 limits="2 4 8 12 16 24 32 48"
+expect_stops=""
 work=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --limits) limits=$2; shift 2 ;;
+    --expect-stops) expect_stops=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
     *) faults_usage_error "unknown argument '$1'" ;;
   esac
+done
+for place in $expect_stops; do
+  [[ " job store history report results " == *" $place "* ]] || faults_usage_error \
+    "--expect-stops: unknown place '$place' (job, store, history, report, results)"
 done
 faults_work_dir disk-full
 suite="$work/disk-full.toml"
@@ -55,9 +66,23 @@ TOML
   --db "$work/baseline.sqlite" >/dev/null 2>&1
 expected=$(metric_values "$work/baseline")
 
+# The place a "cannot write" line of case directory $1 names (line $2), one of --expect-stops'
+# words, or "elsewhere".
+place_of() {
+  case "$2" in
+    *"history database '$1/history.sqlite'"*) echo history ;;
+    *"'$1/store/"*) echo store ;;
+    *"'$1/out/jobs/"*) echo job ;;
+    *"'$1/out/report/"* | *"'$1/out/index.html'"*) echo report ;;
+    *"'$1/out/results."*) echo results ;;
+    *) echo elsewhere ;;
+  esac
+}
+
 cases=0
 failed=0
 stopped=0
+declare -A stops_at=()
 for limit in $limits; do
   for history in with without; do
     cases=$((cases + 1))
@@ -77,6 +102,8 @@ for limit in $limits; do
     error_line=$(grep '^gibench: ' "$dir.stderr" || true)
     if [ "$status" -ne 0 ]; then
       stopped=$((stopped + 1))
+      place=$(place_of "$dir" "$error_line")
+      stops_at[$place]=$((${stops_at[$place]:-0} + 1))
       if [ "$status" -ne 2 ]; then problem="exit $status, not 2"; fi
       if [ "$(printf '%s\n' "$error_line" | grep -c .)" -ne 1 ]; then
         problem="$problem; not one error line"
@@ -110,5 +137,20 @@ for limit in $limits; do
     fi
   done
 done
-echo "disk full: $cases cases, $stopped stopped by the cap, $failed failed"
+per_place=""
+for place in job store history report results elsewhere; do
+  [ -z "${stops_at[$place]:-}" ] || per_place="$per_place, $place ${stops_at[$place]}"
+done
+echo "disk full: $cases cases, $stopped stopped by the cap${per_place:+ (${per_place#, })}," \
+  "$failed failed"
+if [ "$stopped" -eq 0 ]; then
+  echo "FAIL the cap stopped no run: nothing was tested; give smaller --limits"
+  failed=$((failed + 1))
+fi
+for place in $expect_stops; do
+  if [ -z "${stops_at[$place]:-}" ]; then
+    echo "FAIL no limit stopped a run at the $place (--expect-stops)"
+    failed=$((failed + 1))
+  fi
+done
 [ "$failed" -eq 0 ]

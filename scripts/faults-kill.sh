@@ -14,7 +14,11 @@
 #     killed writes may remain, which nothing reads and `gibench store gc` collects);
 #   - the same command resumes the run and completes, with the metric values of the uninterrupted
 #     run, and the database then holds the run once.
-# For a random kill, the last line the run printed before it says where the run was.
+# For a random kill, the last line the run printed before it says where the run was. A kill
+# checks nothing unless it lands mid-run, so the script also fails when a kill in the first
+# quarter of the uninterrupted run's time finds the run finished (such a kill missed it: the runs
+# after the first, cold one took 0.6 of its time at least, never a quarter), when a run fails by
+# itself, and when a run holds at another point than the one named.
 #
 #   scripts/faults-kill.sh GIBENCH [--kills K] [--seed S] [--points P1,P2,…|none] [--work DIR]
 #
@@ -68,6 +72,8 @@ start=$(date +%s.%N)
 "$gibench" run "$suite" --out "$work/baseline" --store "$work/baseline-store" \
   --db "$work/baseline.sqlite" >/dev/null 2>&1
 duration=$(python3 -c "import sys; print(float(sys.argv[2]) - float(sys.argv[1]))" "$start" "$(date +%s.%N)")
+seconds=$(printf '%.1f' "$duration")
+early=$(python3 -c "import sys; print(float(sys.argv[1]) / 4)" "$duration")  # see the top
 expected=$(metric_values "$work/baseline")
 instants=$(python3 -c "
 import random, sys
@@ -78,9 +84,10 @@ print(' '.join(f'{r.uniform(0, float(sys.argv[2])):.3f}' for _ in range(int(sys.
 failed=0
 killed=0
 n=0
-# After kill number $n (described by $1), checks the run's directories, resumes it and compares.
+# After kill number $n (described by $1, with the problems $2 seen so far), checks the run's
+# directories, resumes it and compares.
 check_and_resume() {
-  local where=$1 dir="$work/kill-$n" problem="" integrity recorded
+  local where=$1 problem=${2:-} dir="$work/kill-$n" integrity recorded
   if ! integrity=$(python3 "$here/check-run-integrity.py" "$gibench" --out "$dir/out" \
                      --store "$dir/store" --db "$dir/history.sqlite"); then
     problem="$problem; left damaged: $integrity"
@@ -111,17 +118,28 @@ start_run() {
   pid=$!
 }
 
+# The run's exit status says whether the kill landed: 137 (128 + SIGKILL) while it ran, 0 when it
+# had finished.
 for at in $instants; do
   start_run
   sleep "$at"
-  where="at ${at} s, finished before the kill"
-  if kill -9 "$pid" 2>/dev/null; then
+  kill -9 "$pid" 2>/dev/null || true
+  status=0
+  wait "$pid" 2>/dev/null || status=$?
+  problem=""
+  if [ "$status" -eq 137 ]; then
     killed=$((killed + 1))
     last=$(tail -c 300 "$work/kill-$n/run.log" | tr '\r' '\n' | grep . | tail -1 | cut -c1-90 || true)
     where="at ${at} s, killed after: ${last:-nothing printed yet}"
+  else
+    where="at ${at} s, finished before the kill with exit code $status"
+    if [ "$status" -ne 0 ]; then
+      problem="; the run failed by itself: $(grep '^gibench: ' "$work/kill-$n/run.log" | head -1)"
+    elif awk -v at="$at" -v early="$early" 'BEGIN { exit !(at < early) }'; then
+      problem="; a kill in the first quarter of the uninterrupted run's $seconds s missed it"
+    fi
   fi
-  wait "$pid" 2>/dev/null || true
-  check_and_resume "$where"
+  check_and_resume "$where" "$problem"
 done
 
 at_points=0
@@ -135,7 +153,11 @@ for point in "${point_list[@]}"; do
   if grep -q "^gibench: stalled at " "$work/kill-$n/run.log" && kill -9 "$pid" 2>/dev/null; then
     wait "$pid" 2>/dev/null || true
     at_points=$((at_points + 1))
-    check_and_resume "inside $(grep -m1 -o 'stalled at .*' "$work/kill-$n/run.log" | cut -c12-)"
+    stalled=$(grep -m1 -o 'stalled at .*' "$work/kill-$n/run.log" | cut -c12-)
+    problem=""
+    # shellcheck disable=SC2053 # the point is a pattern, as GIB_STALL_AT reads it
+    [[ "$stalled" == $point ]] || problem="; held at '$stalled', not at '$point'"
+    check_and_resume "inside $stalled" "$problem"
   else
     wait "$pid" 2>/dev/null || true
     failed=$((failed + 1))
@@ -143,6 +165,6 @@ for point in "${point_list[@]}"; do
     rm -rf "$work/kill-$n"
   fi
 done
-echo "kill -9: $kills instants over a ${duration%.*}-second run ($killed killed mid-run)," \
+echo "kill -9: $kills instants over a $seconds-second run ($killed killed mid-run)," \
   "$at_points inside writes, $failed failed"
 [ "$failed" -eq 0 ]

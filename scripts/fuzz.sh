@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds and runs the libFuzzer targets of fuzz/ (docs/reliability.md, "Fuzzing").
 #
-#   scripts/fuzz.sh [--seconds N] [--jobs J] [--fork W] [--build-dir DIR] [--run-only] [--merge]
-#                   [TARGET ...]
+#   scripts/fuzz.sh [--seconds N] [--seed S] [--jobs J] [--fork W] [--build-dir DIR] [--run-only]
+#                   [--merge] [TARGET ...]
 #
 # Every target by default (`scripts/fuzz.sh --list` names them). Each runs N seconds (default 60)
 # on its checked-in corpus fuzz/corpus/<target>/ (suite_file also on the shipped suites), with its
@@ -12,12 +12,18 @@
 # --merge adds the found inputs that reach new coverage to the checked-in corpus (libFuzzer's
 # -merge=1), for a maintainer to review and commit. The build is the clang sanitizer build (the
 # asan preset, build/asan) unless --build-dir names another; --run-only skips building.
-# Prints one line per target (executions, coverage, crashes) and exits 1 when any target found
-# something, 2 on bad arguments.
+# libFuzzer's random seed is S (default: drawn at random), printed with each target's outcome:
+# --seed S repeats a run's random choices on the same corpus.
+# Prints one line per target (executions, coverage, seed, crashes) and exits 1 when any target
+# found something, 2 on bad arguments. A target has found something when libFuzzer failed or
+# when anything is in its artifacts directory afterwards, whatever run put it there (libFuzzer
+# also saves inputs it does not stop for, such as slow units): a finding stays a failure until
+# its input is dealt with (kept as a regression-* corpus file) and removed from there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds=60
+seed=$((RANDOM * 32768 + RANDOM + 1))  # 1 to 2^30 (libFuzzer would draw one of its own for 0)
 jobs=1
 fork=0
 build_dir=build/asan
@@ -30,6 +36,9 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --seconds) [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || usage "--seconds takes a positive integer"
                seconds=$2; shift 2 ;;
+    --seed) [[ "${2:-}" =~ ^[1-9][0-9]{0,9}$ ]] && [ "$2" -lt 2147483648 ] ||
+              usage "--seed takes a positive integer below 2^31"
+            seed=$2; shift 2 ;;
     --jobs) [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || usage "--jobs takes a positive integer"
             jobs=$2; shift 2 ;;
     --fork) [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || usage "--fork takes a positive integer"
@@ -73,9 +82,9 @@ run_target() {
   local workers=()
   [ "$fork" -gt 0 ] && workers=("-fork=$fork")
   ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}" \
-    "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
-    -artifact_prefix="$work/artifacts/" "${workers[@]}" "${dict[@]}" "$work/corpus" "${seeds[@]}" \
-    >"$log" 2>&1 || status=$?
+    "$binary" -seed="$seed" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+    -print_final_stats=1 -artifact_prefix="$work/artifacts/" "${workers[@]}" "${dict[@]}" \
+    "$work/corpus" "${seeds[@]}" >"$log" 2>&1 || status=$?
   local runs cov
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
   # Fork mode prints no final statistics; its progress lines begin "#<executions>: cov: …".
@@ -86,12 +95,16 @@ run_target() {
     cov=$("$binary" -runs=0 "$work/corpus" 2>&1 | grep -o 'INITED cov: [0-9]*' | grep -o '[0-9]*$' ||
             true)
   fi
-  if [ "$status" -ne 0 ]; then
-    echo "fuzz $t: FOUND a problem after ${runs:-?} executions (exit $status); input in $work/artifacts, log $log" >&2
+  local artifacts
+  artifacts=$(find "$work/artifacts" -mindepth 1 -maxdepth 1 -printf '%f ')
+  if [ "$status" -ne 0 ] || [ -n "$artifacts" ]; then
+    echo "fuzz $t: FOUND a problem after ${runs:-?} executions (exit $status, seed $seed);" \
+      "in $work/artifacts: ${artifacts:-nothing}; log $log" >&2
     grep -m3 -E 'ERROR|SUMMARY|uncaught|terminate' "$log" >&2 || tail -5 "$log" >&2
     return 1
   fi
-  echo "fuzz $t: ${runs:-0} executions in ${seconds} s, coverage ${cov:-0} edges, no crash"
+  echo "fuzz $t: ${runs:-0} executions in ${seconds} s (seed $seed), coverage ${cov:-0} edges," \
+    "no crash"
   if [ "$merge" = 1 ]; then
     "$binary" -merge=1 "fuzz/corpus/$t" "$work/corpus" >"$work/merge.log" 2>&1
     echo "fuzz $t: merged into fuzz/corpus/$t ($(grep -o 'added [0-9]* new units' "$work/merge.log" || echo 'nothing new'))"

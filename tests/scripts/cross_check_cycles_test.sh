@@ -7,6 +7,8 @@
 #
 #   tests/scripts/cross_check_cycles_test.sh GIBENCH SOURCE_DIR
 #
+# Exits 77 (skipped) without Blender, unless GIB_REQUIRE_BLENDER=1.
+#
 # The tolerance. Over 20 seeds at 64 spp the relative difference of the two image means
 # (Cycles/GI Bench − 1) had a standard deviation of at most 0.36% in any channel; at 256 spp, four
 # times the paths, it is smaller, around Cycles' own offset: its light sampling leaves its image
@@ -27,6 +29,17 @@ fail() {
   echo "FAIL: $1" >&2
   exit 1
 }
+
+# Blender as the script finds it. Without it the test is skipped (exit 77, its SKIP_RETURN_CODE),
+# or fails where the test run requires it: scripts/test.sh sets GIB_REQUIRE_BLENDER=1, since
+# scripts/install-deps.sh installs Blender there.
+blender="${BLENDER:-blender}"
+if ! command -v "$blender" >/dev/null; then
+  missing="no Blender ('$blender' is not a program; scripts/install-deps.sh installs it)"
+  [ "${GIB_REQUIRE_BLENDER:-0}" != 1 ] || fail "GIB_REQUIRE_BLENDER=1 but $missing"
+  echo "SKIPPED: $missing; GIB_REQUIRE_BLENDER=1 makes this a failure"
+  exit 77
+fi
 
 GIBENCH="$gibench" "$script" cornell --scene-set blocks=false --width 64 --height 48 --spp 256 \
   --truth-spp 256 --out "$work/run" >"$work/out.txt" 2>"$work/err.txt" ||
