@@ -2,7 +2,8 @@
 //                      [--strict-timing] [--confirm [--pairs N] [--base-gibench PATH]
 //                      [--new-gibench PATH]]
 // Exit 0 when nothing regressed, 1 when something did (so `git bisect run` can drive it), 2 on
-// bad input.
+// bad input, 4 when nothing regressed but --confirm could not confirm a timing (a build could not
+// render its job): the diff cannot say "unchanged", and a bisect step skips the commit.
 #include "cli/commands.h"
 #include "cli/history_location.h"
 #include "common/input_error.h"
@@ -99,9 +100,15 @@ fs::path buildOf(const results::RunResults& run, const std::string& given, const
       run.run.id, run.run.gibench_version, kVersion, option));
 }
 
-// Settles every timing change worth it by interleaved A/B runs (suites/timing_confirmation.h).
-void confirmTimings(results::DiffReport& diff, const results::RunResults& base,
-                    const results::RunResults& next, const DiffCommandOptions& o) {
+// The exit code of a diff that found no regression but could not confirm every timing it tried
+// to: not 0, since a timing left to the runs alone can hide a slowdown; not 1, since none was
+// seen; not 2 or 3, since the input was fine and gibench did not fail.
+constexpr int kExitUnconfirmable = 4;
+
+// Settles every timing change worth it by interleaved A/B runs (suites/timing_confirmation.h);
+// returns how many could not be (a job one build cannot render), each named on stderr.
+std::size_t confirmTimings(results::DiffReport& diff, const results::RunResults& base,
+                           const results::RunResults& next, const DiffCommandOptions& o) {
   suites::ConfirmationOptions options;
   options.base_gibench = buildOf(base, o.base_gibench, "--base-gibench");
   options.new_gibench = buildOf(next, o.new_gibench, "--new-gibench");
@@ -119,6 +126,7 @@ void confirmTimings(results::DiffReport& diff, const results::RunResults& base,
       fs::remove_all(dir, ec);
     }
   } cleanup{options.work_dir};
+  std::size_t failed = 0;
   for (results::TimingChange& change : diff.timings) {
     if (!results::worthConfirming(change)) continue;
     const results::JobResult* base_job = base.findJob(change.job);
@@ -129,8 +137,10 @@ void confirmTimings(results::DiffReport& diff, const results::RunResults& base,
     } catch (const std::runtime_error& e) {
       // A job one build cannot render keeps the verdict it had, with the reason.
       fmt::print(stderr, "gibench: could not confirm {}: {}\n", change.job, e.what());
+      ++failed;
     }
   }
+  return failed;
 }
 
 int runDiff(const DiffCommandOptions& o) {
@@ -140,12 +150,13 @@ int runDiff(const DiffCommandOptions& o) {
   options.history = timingHistory(o, base, next);
   options.strict_timing = o.strict_timing;
   results::DiffReport diff = results::diffResults(base, next, options);
-  if (o.confirm) confirmTimings(diff, base, next, o);
+  const std::size_t unconfirmable = o.confirm ? confirmTimings(diff, base, next, o) : 0;
   if (o.json)
     fmt::print("{}\n", results::diffJson(diff).dump());
   else
     fmt::print("{}", results::formatDiff(diff, o.verbose));
-  return diff.regressions() > 0 ? 1 : 0;
+  if (diff.regressions() > 0) return 1;
+  return unconfirmable > 0 ? kExitUnconfirmable : 0;
 }
 
 }  // namespace
@@ -171,7 +182,8 @@ CommandRunner addDiffCommand(CLI::App& app) {
   CLI::Option* confirm = diff->add_flag(
       "--confirm", o->confirm,
       "settle each changed timing by rendering its job with the base and the new build "
-      "alternately on this machine (A B A B …)");
+      "alternately on this machine (A B A B …); exit 4 when one could not be confirmed and "
+      "nothing regressed");
   diff->add_option("--pairs", o->pairs,
                    "A/B runs of each build per confirmed job (default: enough for its test to "
                    "reach the diff's significance with one outlier and one lost pair: 16 to 21)")

@@ -1,5 +1,6 @@
 // gibench: the command line of GI Bench (docs/architecture.md, "Command line").
-// Exit codes: 0 success, 1 a regression found (diff), 2 bad input, 3 an internal failure.
+// Exit codes: 0 success, 1 a regression found (diff), 2 bad input, 3 an internal failure, 4 a
+// timing `diff --confirm` could not confirm (nothing regressed).
 #include "cli/commands.h"
 #include "common/environment_error.h"
 #include "common/input_error.h"

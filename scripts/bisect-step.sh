@@ -6,8 +6,10 @@
 #   scripts/bisect-step.sh GOOD_RESULTS SUITE.toml [gibench run options, e.g. --only 'cornell-direct/*']
 #
 # Exit codes are those `git bisect run` expects: 0 this commit is good, 1 it regressed, 125 it
-# cannot be tested (it does not build, the suite does not run, or gibench cannot diff). Copy this
-# script and the suite file out of the tree first: bisect checks out commits that may lack them.
+# cannot be tested (it does not build, the suite does not run, gibench cannot diff, or a timing
+# could not be confirmed: `gibench diff --confirm` exit 4, a build that cannot render a job, so
+# the commit is neither good nor bad). Copy this script and the suite file out of the tree first:
+# bisect checks out commits that may lack them.
 #
 # Timings: `gibench diff --confirm` reruns each job whose frame time changed with the good run's
 # build and this commit's build alternately (A B A B …, enough pairs for the significance), so
@@ -98,6 +100,9 @@ status=$?
 case $status in
   0) echo "bisect-step: $commit is good" >&2; exit 0 ;;
   1) echo "bisect-step: $commit regressed" >&2; exit 1 ;;
+  4) echo "bisect-step: a timing could not be confirmed at $commit (a build could not render its" \
+       "job; see above); skipping it" >&2
+     exit 125 ;;
   *) echo "bisect-step: gibench diff could not compare at $commit (exit $status); skipping it" >&2
      exit 125 ;;
 esac

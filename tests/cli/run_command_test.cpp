@@ -363,24 +363,47 @@ TEST_F(RunCommandTest, RepeatsOutOfRangeAreRefused) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
-// `gibench diff --confirm` between two runs of one build: each timed job rendered A B A B … by
-// the build, the verdicts resting on the interleaved pairs, and a build that cannot be found
-// named as the fix.
+// An executable shell script (a stand-in for another build of gibench).
+fs::path writeScript(const fs::path& path, const std::string& body) {
+  writeFile(path, "#!/bin/sh\n" + body);
+  fs::permissions(path, fs::perms::owner_exec, fs::perm_options::add);
+  return path;
+}
+
+// `gibench diff --confirm` between two runs of one build, given as two builds that mark in a log
+// which of them rendered: with no history (--no-history) nothing settles a timing before the A/B
+// runs, so each timed job is rendered A B A B … and its verdict rests on those pairs; a build
+// that cannot be found is named as the fix.
 TEST_F(RunCommandTest, DiffConfirmRendersEachBuildAlternately) {
   ASSERT_EQ(run(dir_ / "a", {"--no-history"}).exit_code, 0);
   ASSERT_EQ(run(dir_ / "b", {"--no-history"}).exit_code, 0);
+  const fs::path order = dir_ / "order.log";
+  auto marking = [&](const std::string& mark) {
+    return writeScript(dir_ / ("gibench-" + mark), "printf " + mark + " >>'" + order.string() +
+                                                       "'\nexec '" GIB_GIBENCH_PATH "' \"$@\"\n")
+        .string();
+  };
+  constexpr int kPairs = 3;
   const test::CommandResult r =
       test::runGibench({"diff", (dir_ / "a").string(), (dir_ / "b").string(), "--confirm",
-                        "--pairs", "3", "--json", "--store", store().string()},
+                        "--pairs", std::to_string(kPairs), "--base-gibench", marking("A"),
+                        "--new-gibench", marking("B"), "--json", "--store", store().string()},
                        dir_.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, Not(HasSubstr("could not confirm")));
   const nlohmann::json diff = nlohmann::json::parse(r.out);
   ASSERT_EQ(diff["timings"].size(), 2u);
   for (const auto& timing : diff["timings"]) {
-    if (timing["evidence"] != "interleaved A/B") continue;  // settled by the history
-    EXPECT_EQ(timing["pairs_base_ms"].size(), 3u);
-    EXPECT_EQ(timing["pairs_new_ms"].size(), 3u);
+    EXPECT_EQ(timing["evidence"], "interleaved A/B") << timing["job"];
+    EXPECT_EQ(timing["pairs_base_ms"].size(), std::size_t(kPairs)) << timing["job"];
+    EXPECT_EQ(timing["pairs_new_ms"].size(), std::size_t(kPairs)) << timing["job"];
   }
+  // Job after job, each pair the base build's render then the new build's.
+  std::string alternating;
+  for (std::size_t i = 0; i < std::size_t(kPairs) * diff["timings"].size(); ++i)
+    alternating += "AB";
+  EXPECT_EQ(readText(order), alternating);
+
   const test::CommandResult missing =
       test::runGibench({"diff", (dir_ / "a").string(), (dir_ / "b").string(), "--confirm",
                         "--base-gibench", (dir_ / "nowhere").string(), "--store", store().string()},
@@ -388,6 +411,39 @@ TEST_F(RunCommandTest, DiffConfirmRendersEachBuildAlternately) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_THAT(missing.err, HasSubstr("--base-gibench"));
   EXPECT_EQ(test::countLines(missing.err), 1) << missing.err;
+}
+
+// A build that cannot render the jobs (a base build lacking their technique, say): each timing
+// keeps the runs' own verdict, named on stderr, and the diff exits 4, not 0, since it cannot say
+// the timings are unchanged (a bisect step skips such a commit); a regression found otherwise
+// still exits 1.
+TEST_F(RunCommandTest, DiffConfirmThatCannotRenderExitsFour) {
+  ASSERT_EQ(run(dir_ / "a", {"--no-history"}).exit_code, 0);
+  const std::string broken =
+      writeScript(dir_ / "broken-gibench", "echo 'no such technique' >&2\nexit 2\n").string();
+  const std::string a = (dir_ / "a").string();
+  const test::CommandResult r =
+      test::runGibench({"diff", a, a, "--confirm", "--pairs", "2", "--base-gibench", broken,
+                        "--json", "--store", store().string()},
+                       dir_.path());
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  for (const char* job : {"cornell-direct/shadow=hard", "cornell-direct/shadow=pcf"})
+    EXPECT_THAT(r.err, HasSubstr(std::string("gibench: could not confirm ") + job + ": "));
+  EXPECT_THAT(r.err, HasSubstr("no such technique"));
+  const nlohmann::json diff = nlohmann::json::parse(r.out);
+  ASSERT_EQ(diff["timings"].size(), 2u);
+  for (const auto& timing : diff["timings"])
+    EXPECT_EQ(timing["evidence"], "frames") << timing["job"];
+
+  results::RunResults worse = results::readResultsFile(dir_ / "a");
+  for (auto& [name, value] : worse.jobs[1].metrics)
+    if (name == "relmse") value *= 2;
+  results::writeResultsFile(dir_ / "worse.json", worse);
+  EXPECT_EQ(test::runGibench({"diff", a, (dir_ / "worse.json").string(), "--confirm", "--pairs",
+                              "2", "--base-gibench", broken, "--store", store().string()},
+                             dir_.path())
+                .exit_code,
+            1);
 }
 
 // Options `diff` cannot act on: a pair count no test can use, and A/B options without --confirm

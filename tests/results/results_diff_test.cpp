@@ -2,7 +2,10 @@
 // being flagged, and the noise that must not be.
 #include "results/results_diff.h"
 
+#include "metrics/timing_statistics.h"
 #include "support/synthetic_results.h"
+
+#include <fmt/format.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -158,11 +161,23 @@ TEST(ResultsDiff, StrictTimingCountsAnUnconfirmedSlowdown) {
   EXPECT_EQ(diffResults(next, base, strict).regressions(), 0u);
 }
 
+// Unchanged by the 10% tolerance; the line says what the frames could have seen, by Welch's test
+// of the two runs' frames (metrics::testWithinRuns, written out in timing_statistics_test.cpp).
 TEST(ResultsDiff, FramesFromTheSameDistributionAreUnchanged) {
-  const TimingChange change = timingChange(test::noisyFrameTimes(21, kFrames, 8.0),
-                                           test::noisyFrameTimes(22, kFrames, 8.0));
+  const std::vector<double> base = test::noisyFrameTimes(21, kFrames, 8.0);
+  const std::vector<double> next = test::noisyFrameTimes(22, kFrames, 8.0);
+  const TimingChange change = timingChange(base, next);
+  const metrics::TimingTest expected = metrics::testWithinRuns(base, next, change.significance);
+  EXPECT_EQ(change.evidence, TimingEvidence::kFrames);
   EXPECT_EQ(change.verdict, Verdict::kUnchanged);
-  EXPECT_GT(change.detectable_change, 0.0);  // what "unchanged" could have seen
+  EXPECT_GT(expected.p_value, change.significance);  // noise, which the test does not reject
+  EXPECT_EQ(change.p_value, expected.p_value);
+  EXPECT_EQ(change.detectable_change, expected.detectable_change);
+  const std::string line = change.explanation();
+  EXPECT_THAT(line, HasSubstr("16 + 16 frames within the two runs only"));
+  EXPECT_THAT(line, HasSubstr(fmt::format("p = {:.2g} against", expected.p_value)));
+  EXPECT_THAT(line, HasSubstr(fmt::format("detects changes of {:.1f}% or more",
+                                          100 * expected.detectable_change)));
 }
 
 TEST(ResultsDiff, SignificantFivePercentIsUnderTheTimingThreshold) {

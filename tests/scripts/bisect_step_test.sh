@@ -3,7 +3,8 @@
 # makes the one job four times the work (light_samples 8 → 32). `git bisect run` with the step
 # must stop at the fifth commit, the slowdown confirmed by interleaved A/B renders, and at no
 # other. One build of gibench serves every commit (GIB_BISECT_GIBENCH): what changes is the
-# suite, as a change in the code would change the work.
+# suite, as a change in the code would change the work. Then a good build that cannot render the
+# job: the timing cannot be confirmed, so the step must skip the commit (125), not call it good.
 #
 #   tests/scripts/bisect_step_test.sh GIBENCH SOURCE_DIR
 set -euo pipefail
@@ -66,4 +67,20 @@ grep -q "interleaved A/B" "$work/bisect.log" || {
   cat "$work/bisect.log"
   exit 1
 }
-echo "bisect found commit 5, the one that made the job slower"
+
+# A good build that cannot render (one that fails every `gibench render`, as a build lacking the
+# job's technique would): `gibench diff --confirm` exits 4 and the step skips the commit.
+broken="$work/broken-gibench"
+printf '#!/bin/sh\necho "no such technique" >&2\nexit 2\n' >"$broken"
+chmod +x "$broken"
+step_status=0
+GIB_BISECT_GIBENCH="$gibench" GIB_BISECT_GOOD_GIBENCH="$broken" GIB_BISECT_PAIRS=2 \
+  "$work/bisect-step.sh" "$work/good/results.json" "$repo/suite.toml" >"$work/skip.log" 2>&1 ||
+  step_status=$?
+if [ "$step_status" != 125 ] || ! grep -q "gibench: could not confirm" "$work/skip.log" ||
+  ! grep -q "a timing could not be confirmed" "$work/skip.log"; then
+  echo "a step whose timing could not be confirmed exited $step_status, expected 125; its log:"
+  cat "$work/skip.log"
+  exit 1
+fi
+echo "bisect found commit 5, the one that made the job slower, and skips a commit it cannot confirm"
