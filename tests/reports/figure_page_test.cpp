@@ -176,7 +176,10 @@ TEST_F(FigurePage, TheIndexLinksEachFigureWithItsFirstPictureAsPreview) {
   ASSERT_NE(link, std::string::npos) << index;
   const std::string preview =
       "<img src=\"" + job(figure().panels[0].job).outputs.image_png + "\" alt=\"\">";
-  EXPECT_EQ(index.find(preview, link), index.find("<img", link));
+  // The preview is there, and no other picture comes between the link and it.
+  const std::size_t at = index.find(preview, link);
+  ASSERT_NE(at, std::string::npos) << index;
+  EXPECT_EQ(at, index.find("<img", link));
   EXPECT_THAT(index, HasSubstr("<span>" + escapeHtml(figure().title) + "</span>"));
 }
 

@@ -97,6 +97,7 @@ TEST_F(HtmlReport, IndexShowsTheRunAndAMatrixOfScenesByTechniquesWithTheReferenc
   const std::size_t reference = html.find("<th>reference</th>", matrix);
   const std::size_t direct = html.find("<th>direct</th>", matrix);
   ASSERT_NE(reference, std::string::npos);
+  ASSERT_NE(direct, std::string::npos);
   EXPECT_LT(reference, direct);
   EXPECT_EQ(countOccurrences(html, "<td>cornell</td>"), 1);  // one row per scene
   // Each job's entry: sweep label, primary metric value, frame median.
