@@ -4,7 +4,6 @@
 // k-iteration image against the reference limited to k + 1 bounces.
 #include "realtime/techniques/illumination_network/illumination_network_technique.h"
 
-#include "metrics/image_metrics.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
@@ -14,6 +13,7 @@
 #include "scene/medium.h"
 #include "support/gl_test_context.h"
 #include "support/medium_march.h"
+#include "support/particle_lighting.h"
 #include "support/technique_frame.h"
 
 #include <gtest/gtest.h>
@@ -251,13 +251,27 @@ TEST_F(IlluminationNetwork, ALosslessCloudUnderAUniformSkyIsInvisible) {
 }
 
 // k iterations against the reference limited to k + 1 bounces (the technique's path class), and
-// the converged network against the full reference, on a cloud of 256 particles at 48². Measured:
-// relMSE 0.0055 and 0.0030, energy ratios 0.957 and 0.990 (the particle discretisation loses a
-// few per cent at low orders; 64-spp references add their noise). The bounds leave room for
-// that; a missing light, or a scattering order too many or too few, is off by 10–40%.
+// the converged network against the full reference, on a cloud of 256 particles at 32², 64 spp
+// in 16 replicas (15 degrees of freedom). The densities are quartered, as in the lossless test,
+// so that lighting the particles at their centres, which the network does at every scattering,
+// costs little: centreLightingAllowance (4.4% of the scattered light here, 8.8% in a pixel).
+// The chains stand in for the lines' transmittance as the volume shadow does, from a particle's
+// centre with its own density left out; what else sets a chain apart from its line has no
+// bound here, and the same allowance is asked of it. The sky transmitted through the medium is
+// exact (the albedo-0 test); the scattered light's sum and the relMSE less the reference's noise
+// are held to the allowance plus their standard errors' family-wise bound (1%, four estimates).
+// At one iteration an order of scattering too few takes 25% of the scattered light away, one
+// too many adds 10%, the fill light left out of the view shading takes 7.5%; the lights' light
+// off by a small scale is the billboards' one-particle test's to find (the same view shading),
+// the scattering's the lossless test's.
 TEST_F(IlluminationNetwork, MatchesTheReferenceOfItsPathClass) {
-  const scene::Scene s = cloud({"particles=256"});
-  constexpr int kSize = 48;
+  scene::Scene s = cloud({"particles=256"});
+  for (scene::MediumParticle& p : s.medium.particles) p.density *= 0.25f;
+  scene::Scene absorbing = s;
+  absorbing.medium.albedo = scene::Rgb(0.0f);
+  constexpr int kSize = 32;
+  const image::Image transmitted = Network(absorbing, kSize, {}).render();
+  const test::CentreLightingAllowance allowance = test::centreLightingAllowance(s.medium.particles);
   for (int iterations : {1, 24}) {
     Network network(s, kSize, {});
     network.iterate(iterations);
@@ -265,13 +279,19 @@ TEST_F(IlluminationNetwork, MatchesTheReferenceOfItsPathClass) {
     const image::Image image = network.render();
     const scene::PathClass path_class =
         iterations == 24 ? scene::PathClass{} : network.technique->pathClass();
-    const ref::RenderResult reference = test::renderClassReference(s, kSize, 64, path_class);
-    const double relmse = metrics::computeRelMse(reference.mean, image).value;
-    const double energy = metrics::computeEnergyRatio(reference.mean, image).value;
-    RecordProperty("relmse_" + std::to_string(iterations), std::to_string(relmse));
-    RecordProperty("energy_ratio_" + std::to_string(iterations), std::to_string(energy));
-    EXPECT_LT(relmse, 0.015) << iterations << " iterations";
-    EXPECT_NEAR(energy, 1.0, 0.06) << iterations << " iterations";
+    const ref::RenderResult reference = test::renderClassReference(s, kSize, 64, path_class, 16);
+    const test::ScatteredLightMatch match =
+        test::matchScatteredLight(reference, image, transmitted, allowance);
+    const std::string k = std::to_string(iterations);
+    RecordProperty("scattered_light_ratio_" + k, std::to_string(match.ratio.mean));
+    RecordProperty("relmse_less_noise_" + k, std::to_string(match.relmse.mean));
+    std::printf(
+        "%d iterations: scattered light ratio %.4f ± %.4f (allowance %.4f); relMSE less "
+        "noise %.6f ± %.6f (allowance %.6f)\n",
+        iterations, match.ratio.mean, match.ratio.standard_error, allowance.mean, match.relmse.mean,
+        match.relmse.standard_error, match.relmse_allowance);
+    SCOPED_TRACE(k + " iterations");
+    test::expectScatteredLightMatches(match, allowance, 4, 0.01);
   }
 }
 

@@ -6,6 +6,7 @@
 #include "metrics/timing_statistics.h"
 #include "scene/polygon_solid_angle.h"
 #include "support/gl_test_context.h"
+#include "support/render_statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -65,27 +66,25 @@ TEST_F(JitteredLightSampling, AnUnoccludedLightIsMeasuredByEverySchemeWithItsPix
   EXPECT_NEAR(estimate(settingsFor("occlusion_query", 32), kUnoccluded), truth, 1e-3 * truth);
 }
 
-// Unbiased: over 64 seeds the mean error at each point is zero within its standard error. Each
-// point's two-sided test at 3.5 SE holds with 99.95%; the six together with ≥ 99.7% (Šidák).
+// Unbiased: over 64 seeds the mean error at each point is zero within its standard error: each
+// point's (mean − 0)/standard error follows Student's t with 63 degrees of freedom, and the six
+// keep within the bound that holds all six at once with 99% (Šidák: 3.28 standard errors).
 // Regular sampling is deterministic: its error on the grid-aligned occluder edges does not
 // average out, and over the points it stands far beyond the standard error the jittered means
 // reach (the root mean squares of both, five times apart; about thirteen when this was written).
 TEST_F(JitteredLightSampling, JitteredSamplingIsUnbiasedAndRegularSamplingIsNot) {
   constexpr int kSeeds = 64;
   double regular_squares = 0, se_squares = 0;
+  const double bound = test::familyWiseBound(kSeeds - 1, double(kPartlyHidden.size()), 0.01);
   for (const glm::dvec3& x : kPartlyHidden) {
     const double truth = exact(x);
-    double sum = 0, squares = 0;
-    for (int seed = 0; seed < kSeeds; ++seed) {
-      const double e = estimate(settingsFor("jittered1", 32, std::uint32_t(seed)), x) - truth;
-      sum += e;
-      squares += e * e;
-    }
-    const double mean = sum / kSeeds;
-    const double sd = std::sqrt((squares - kSeeds * mean * mean) / (kSeeds - 1));
-    const double se = sd / std::sqrt(double(kSeeds));
-    ASSERT_GT(sd, 0) << "jittered samples must differ between seeds";
-    EXPECT_LT(std::abs(mean), 3.5 * se) << "point " << x.x << "," << x.z;
+    std::vector<double> errors;
+    for (int seed = 0; seed < kSeeds; ++seed)
+      errors.push_back(estimate(settingsFor("jittered1", 32, std::uint32_t(seed)), x) - truth);
+    const test::MeanEstimate error = test::sampleMean(errors);
+    const double mean = error.mean, se = error.standard_error;
+    ASSERT_GT(se, 0) << "jittered samples must differ between seeds";
+    EXPECT_LT(std::abs(mean), bound * se) << "point " << x.x << "," << x.z;
     const double regular_error = estimate(settingsFor("regular", 32), x) - truth;
     regular_squares += regular_error * regular_error;
     se_squares += se * se;
@@ -108,20 +107,39 @@ TEST_F(JitteredLightSampling, JitteringAndMoreSamplesPerPixelReduceTheMeanError)
   EXPECT_LT(jittered4, jittered1);
 }
 
-TEST_F(JitteredLightSampling, TimingsArePositiveAndCoverTheRequestedSamples) {
+// The bench's outputs recomputed: at each grid point its error is what a sampler of its own
+// estimates there with the same jitter (on the first pass over the points a point's index in
+// occludedLightBenchPoints' order names it in the hash), less the exact visible solid angle; and
+// the mean absolute error is theirs. The same rasterized samples weighed by the same double
+// arithmetic give the same bits, so EXPECT_DOUBLE_EQ's 4 ULPs leave room for nothing else: an
+// error of the wrong point, jitter or sign is off by about the scheme's own error (1e-6 to 2e-4 sr
+// at these points), far beyond them. The timed samples cover the requested count, later passes
+// over the points included, every phase timed.
+TEST_F(JitteredLightSampling,
+       ErrorsAreEachPointsEstimateLessItsExactValueAndTimingsCoverTheSamples) {
   const scene::OccludedLightBench small = scene::occludedLightBench(4);
-  const rt::SchemeMeasurement m = rt::measureScheme(small, settingsFor("jittered4", 16), 40);
+  const CoverageSettings settings = settingsFor("jittered4", 16);
+  const rt::SchemeMeasurement m = rt::measureScheme(small, settings, 40);
+  const std::vector<glm::dvec3> points = scene::occludedLightBenchPoints(small);
+  ASSERT_EQ(m.errors.size(), points.size());
+  rt::LightCoverageSampler sampler(rt::quadTriangles(small.light),
+                                   rt::quadTriangles(small.occluder), settings);
+  double mean_abs_error = 0;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const double error = sampler.visibleSolidAngle(points[p], std::uint32_t(p), nullptr) -
+                         scene::visibleSolidAngle(points[p], small.light, small.occluder);
+    EXPECT_DOUBLE_EQ(m.errors[p], error) << "point " << p;
+    mean_abs_error += std::abs(error) / double(points.size());
+  }
+  EXPECT_DOUBLE_EQ(m.mean_abs_error, mean_abs_error);
+
   EXPECT_EQ(m.phase_times.size(), 40u);
-  EXPECT_EQ(m.errors.size(), 16u);
   for (double rt::CoveragePhaseTimes::*phase :
        {&rt::CoveragePhaseTimes::render_ms, &rt::CoveragePhaseTimes::read_back_ms,
         &rt::CoveragePhaseTimes::weight_ms}) {
     std::vector<double> samples;
     for (const rt::CoveragePhaseTimes& t : m.phase_times) samples.push_back(t.*phase);
-    const metrics::TimingSummary q = metrics::summarizeTimings(samples);
-    EXPECT_GT(q.median, 0);
-    EXPECT_LE(q.first_quartile, q.median);
-    EXPECT_LE(q.median, q.third_quartile);
+    EXPECT_GT(metrics::summarizeTimings(samples).median, 0);
   }
 }
 

@@ -37,10 +37,11 @@ rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::stri
 }
 
 ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
-                                       scene::PathClass path_class) {
+                                       scene::PathClass path_class, std::uint32_t replicas) {
   ref::RenderSettings settings;
   settings.width = settings.height = size;
   settings.spp = spp;
+  settings.replicas = replicas;
   settings.path_class = path_class;
   return ref::renderReference(scene, settings);
 }

@@ -19,7 +19,9 @@ scene::Scene floorScene();
 rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::string& technique,
                                       const std::vector<std::string>& set, int size);
 
+// `replicas` as ref::RenderSettings::replicas (0: the default, 4 for 64 spp and more): more give
+// the variance layer more degrees of freedom at the same cost.
 ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
-                                       scene::PathClass path_class);
+                                       scene::PathClass path_class, std::uint32_t replicas = 0);
 
 }  // namespace gib::test
