@@ -43,30 +43,32 @@ wrapped() {
   err=$(cat "$work/err")
 }
 
+# Fails unless the last wrapped run exited `want_status` after `want_runs` runs of the test.
+expect() {
+  local want_status=$1 want_runs=$2 what=$3
+  [ "$status" -eq "$want_status" ] && [ "$runs" -eq "$want_runs" ] ||
+    fail "$what: exit $status after $runs runs, not $want_status after $want_runs"
+}
+
 wrapped "1" stderr "$tracer" 1
-[ "$status" -eq 0 ] && [ "$runs" -eq 2 ] ||
-  fail "a tracer crash then a pass: exit $status after $runs runs, not 0 after 2"
+expect 0 2 "a tracer crash then a pass"
 grep -q "running the test once more" <<<"$err" || fail "the rerun is not announced: $err"
 [ "$out" = $'run 1\nrun 2' ] || fail "stdout of both runs not passed through: $out"
 
 wrapped "1" stdout "$tracer" 1
-[ "$status" -eq 0 ] && [ "$runs" -eq 2 ] ||
-  fail "a tracer crash reported on stdout: exit $status after $runs runs, not 0 after 2"
+expect 0 2 "a tracer crash reported on stdout"
 
 wrapped "1 2" stderr "$tracer" 23
-[ "$status" -eq 23 ] && [ "$runs" -eq 2 ] ||
-  fail "a tracer crash twice: exit $status after $runs runs, not 23 after 2"
+expect 23 2 "a tracer crash twice"
 
 wrapped "1" stderr "ERROR: AddressSanitizer: heap-use-after-free on address 0x6020" 1
-[ "$status" -eq 1 ] && [ "$runs" -eq 1 ] ||
-  fail "an AddressSanitizer finding: exit $status after $runs runs, not 1 after 1"
+expect 1 1 "an AddressSanitizer finding"
 
 wrapped "1" stdout "[  FAILED  ] Suite.Test (12 ms)" 3
-[ "$status" -eq 3 ] && [ "$runs" -eq 1 ] ||
-  fail "a failed assertion: exit $status after $runs runs, not 3 after 1"
+expect 3 1 "a failed assertion"
 
 wrapped "" stderr "" 0
-[ "$status" -eq 0 ] && [ "$runs" -eq 1 ] || fail "a pass: exit $status after $runs runs, not 0 after 1"
+expect 0 1 "a pass"
 [ "$out" = "run 1" ] && [ "$err" = "diagnostic 1" ] ||
   fail "stdout and stderr not kept apart: stdout '$out', stderr '$err'"
 echo "PASS"
