@@ -375,11 +375,8 @@ TEST_F(HemisphericalGather, VoxelSlicesTakeThePapersMemory) {
                        "slice_size=" + std::to_string(size)},
                       info.name));
   technique.prepare(gpu, 16, 16);
-  const std::vector<TechniqueStatistic> statistics = technique.statistics();
-  const auto reported = std::find_if(statistics.begin(), statistics.end(),
-                                     [](const auto& s) { return s.name == "voxel_slices_mb"; });
-  ASSERT_NE(reported, statistics.end());
-  EXPECT_DOUBLE_EQ(reported->value, double(allocated) / 1e6);
+  EXPECT_DOUBLE_EQ(test::statisticNamed(technique.statistics(), "voxel_slices_mb"),
+                   double(allocated) / 1e6);
 }
 
 }  // namespace

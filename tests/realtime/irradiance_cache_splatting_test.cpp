@@ -17,7 +17,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <string_view>
 
@@ -204,14 +203,6 @@ TEST_F(IrradianceCacheSplatting, SplattingAConstantFieldReconstructsItExactly) {
     }
 }
 
-// A run's "records" statistic; a failure, and NaN (which no comparison passes), when it has none.
-double recordCount(const TechniqueRunResult& r) {
-  for (const TechniqueStatistic& s : r.statistics)
-    if (s.name == "records") return s.value;
-  ADD_FAILURE() << "no statistic 'records'";
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
 // On the Cornell box against the reference restricted to two bounces, the CPU cache and both GPU
 // samplers are well under half as far (relMSE) as `direct`, which leaves the bounce out, with
 // path class LE + LDE + LDDE. The CPU cache refines beyond its first round, whose 32-pixel grid
@@ -232,7 +223,7 @@ TEST(IrradianceCacheTechniques, OneCachedBounceCutsTheErrorOfDirectLightAlone) {
     const TechniqueRunResult r = test::renderOneFrame(scene, technique, {set}, size);
     EXPECT_EQ(r.path_class, (scene::PathClass{0, 2}));
     const double error = metrics::computeRelMse(reference.mean, r.image).value;
-    const double records = recordCount(r);
+    const double records = test::statisticNamed(r.statistics, "records");
     std::printf("%s %s: relMSE %.4f (direct %.4f), %g records\n", technique, set, error, direct,
                 records);
     EXPECT_LT(error, 0.4 * direct) << technique << " " << set;

@@ -15,6 +15,7 @@
 #include "support/form_factor.h"
 #include "support/gl_test_context.h"
 #include "support/render_statistics.h"
+#include "support/technique_frame.h"
 
 #include <gtest/gtest.h>
 #include <glm/common.hpp>
@@ -365,13 +366,6 @@ double distanceOffsetLoss(const scene::Scene& scene, double covered_texels) {
   return 2 * std::sqrt(area / covered_texels / kPi) / side;
 }
 
-double statistic(const TechniqueRunResult& r, const std::string& name) {
-  for (const TechniqueStatistic& s : r.statistics)
-    if (s.name == name) return s.value;
-  ADD_FAILURE() << "no statistic " << name;
-  return 0;
-}
-
 // Without clustering (a pane per entry point, all used) the maps' own image (output=indirect,
 // two or more bounces) estimates the reference of that path class, unbiased but for the
 // distance offset (above), with a noise that falls as entry points grow. Twelve seeds of 256
@@ -406,7 +400,7 @@ TEST(LightPathMap, ConvergesToTheReferenceWithoutClustering) {
     EXPECT_EQ(r.path_class, (scene::PathClass{2, scene::PathClass::kUnlimited}));
     if (seed == 0) {
       one_seed = test::relMseLessNoise(reference, r.image).mean;
-      offset_loss = distanceOffsetLoss(scene, statistic(r, "atlas_texels"));
+      offset_loss = distanceOffsetLoss(scene, test::statisticNamed(r.statistics, "atlas_texels"));
     }
     means.push_back(imageMean(r.image));
     for (std::size_t i = 0; i < sum.data().size(); ++i) sum.data()[i] += r.image.data()[i] / kSeeds;

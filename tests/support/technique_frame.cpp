@@ -3,6 +3,10 @@
 #include "reference/embree_scene.h"
 #include "scene/mesh_builder.h"
 
+#include <gtest/gtest.h>
+
+#include <limits>
+
 namespace gib::test {
 
 scene::Scene floorScene() {
@@ -44,6 +48,14 @@ ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std:
   settings.replicas = replicas;
   settings.path_class = path_class;
   return ref::renderReference(scene, settings);
+}
+
+double statisticNamed(const std::vector<rt::TechniqueStatistic>& statistics,
+                      std::string_view name) {
+  for (const rt::TechniqueStatistic& s : statistics)
+    if (s.name == name) return s.value;
+  ADD_FAILURE() << "no statistic '" << name << "'";
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace gib::test

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gib::test {
@@ -23,5 +24,10 @@ rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::stri
 // the variance layer more degrees of freedom at the same cost.
 ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
                                        scene::PathClass path_class, std::uint32_t replicas = 0);
+
+// The value of the statistic `name` among a run's or a technique's `statistics`; a test failure,
+// and NaN (which no comparison passes), when there is none: a statistic that went missing must
+// not read as 0.
+double statisticNamed(const std::vector<rt::TechniqueStatistic>& statistics, std::string_view name);
 
 }  // namespace gib::test
