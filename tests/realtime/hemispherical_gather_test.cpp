@@ -91,8 +91,8 @@ Gathered gatherUnitRadiance(const scene::Scene& scene, int projection, int view_
 // 64 lanes adds size²/64 terms in turn, then 6 halvings add the lanes' sums, and each term comes
 // from about 10 rounded operations. For positive terms Higham's bound γ_n = n·u (n the roundings
 // any one term goes through) bounds the sum's relative error: 1 040 u = 6.2·10⁻⁵ at 256², 80 u =
-// 4.8·10⁻⁶ at 64²; a weight 0.5% off is 80 times the larger. It takes the driver's tan() to be
-// as exact as float (llvmpipe's is; at 80° the GLSL spec's derived bound allows 3·10⁻³).
+// 4.8·10⁻⁶ at 64²; a weight 0.5% off is 80 times the larger. The perspective view's tangent is
+// the shared header's literal on both sides, not each driver's tan().
 constexpr double kUnitRoundoff = 0x1p-24;
 double viewSumRounding(int view_size) {
   const int additions = view_size * view_size / gpu::kGatherSumGroupSize +
@@ -100,8 +100,15 @@ double viewSumRounding(int view_size) {
   return (additions + 10) * kUnitRoundoff;
 }
 
+// The tangent the views are drawn and summed with (the shared header's literal).
 double perspectiveTangent() {
-  return std::tan(0.5 * double(gpu::kPerspectiveFieldOfViewDegrees) * kPi / 180.0);
+  return double(gpu::kPerspectiveHalfTangent);
+}
+
+// That literal is tan(½ · 160°), to the float nearest it.
+TEST(HemisphericalGatherTechnique, ThePerspectiveViewsTangentIsItsFieldOfViews) {
+  EXPECT_EQ(gpu::kPerspectiveHalfTangent,
+            float(std::tan(0.5 * double(gpu::kPerspectiveFieldOfViewDegrees) * kPi / 180.0)));
 }
 
 // The centre of pixel (i, j) of a size² view, in its [−1, 1]².

@@ -22,7 +22,7 @@ void main() {
   const int point = u_first_point + layer;
   const uint lane = gl_LocalInvocationIndex;
   const float pixel = 2.0 / float(u_size);  // a pixel's side in the image's [−1, 1]²
-  const float tangent = tan(radians(0.5 * kPerspectiveFieldOfViewDegrees));
+  const float tangent = kPerspectiveHalfTangent;
   vec3 sum = vec3(0.0);
   float count = 0.0;
   for (int i = int(lane); i < u_size * u_size; i += kGatherSumGroupSize) {

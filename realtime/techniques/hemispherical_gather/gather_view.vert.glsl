@@ -40,7 +40,7 @@ void main() {
     float r = max(length(q), 1e-12);
     gl_Position = vec4(q.xy / r, 2.0 * (r - u_near) / (u_far - u_near) - 1.0, 1.0);
   } else {
-    float scale = 1.0 / tan(radians(0.5 * kPerspectiveFieldOfViewDegrees));
+    float scale = 1.0 / kPerspectiveHalfTangent;
     gl_Position = vec4(q.xy * scale,
                        (u_far + u_near) / (u_far - u_near) * q.z -
                            2.0 * u_far * u_near / (u_far - u_near),

@@ -27,6 +27,11 @@ const int kSliceFaces = 6;
 const int kGatherClipDistances = 7;
 
 const float kPerspectiveFieldOfViewDegrees = 160.0f;
+// tan(½ · 160°), the perspective view's half-width at unit distance, as a literal: GLSL's tan()
+// may err by about 3·10⁻³ at 80° (the spec's derived bound), and the view's projection and the
+// weights that sum its pixels must use one value on every driver (the float nearest the tangent,
+// checked by tests/realtime/hemispherical_gather_test.cpp).
+const float kPerspectiveHalfTangent = 5.67128181961771f;
 const int kGatherSumGroupSize = 64;
 
 #ifdef __cplusplus
