@@ -7,6 +7,7 @@
 #include "cli/run_summary.h"
 #include "common/cache_paths.h"
 #include "common/input_error.h"
+#include "reports/report_labels.h"
 #include "suites/slurm_submission.h"
 #include "suites/suite_runner.h"
 
@@ -44,7 +45,9 @@ int runMerge(const MergeCommandOptions& o) {
   options.log_of = suites::slurmLogOf;
   std::vector<fs::path> dirs(o.dirs.begin(), o.dirs.end());
   const suites::RunOutcome outcome = suites::mergeRuns(dirs, options);
-  printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs, o.ci), o.ci);
+  const fs::path report = writeRunReport(outcome, options, o.trend_runs, o.ci);
+  printRunSummary(outcome, report, o.ci);
+  fmt::print("open       {}\n", reports::fileUrl(report));
   if (outcome.failed > 0) {
     fmt::print(stderr, "gibench: {} of {} jobs failed; the report shows why\n", outcome.failed,
                outcome.results.jobs.size());

@@ -38,6 +38,7 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
                                  o.replicas, o.spp));
   settings.replicas = std::uint32_t(o.replicas);
   settings.sampler = ref::parseSamplerName(o.sampler);
+  settings.pixel_sampling = ref::parsePixelSampling(o.pixel_sampling);
   settings.path_class.min_bounces = o.min_bounces;
   if (o.max_bounces) settings.path_class.max_bounces = *o.max_bounces;
   settings.threads = o.threads;

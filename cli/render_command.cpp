@@ -43,6 +43,13 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->capture_default_str()
       ->group(kReference);
   render
+      ->add_option("--pixel-sampling", o->pixel_sampling,
+                   "area (a box filter over each pixel, anti-aliased) or center (every camera ray "
+                   "through the pixel centre, as a rasteriser samples: the reference a real-time "
+                   "frame is measured against)")
+      ->capture_default_str()
+      ->group(kReference);
+  render
       ->add_option("--min-bounces", o->min_bounces,
                    "only paths with at least this many bounces (0: emitters seen directly)")
       ->capture_default_str()

@@ -22,6 +22,7 @@ struct RenderOptions {
   std::uint64_t seed = 0;
   long long replicas = 0;  // 0: ref::defaultReplicas
   std::string sampler = "sobol";
+  std::string pixel_sampling = "area";
   int min_bounces = 0;
   std::optional<int> max_bounces;
   int threads = 0;

@@ -9,10 +9,12 @@
 #include "common/input_error.h"
 #include "reports/html_report.h"
 #include "reports/report_context.h"
+#include "reports/report_labels.h"
 #include "results/results_json.h"
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 
@@ -64,7 +66,11 @@ int runReport(const ReportOptions& o) {
   const reports::ReportContext context = historyContext(results, o.history, o.trend_runs);
   const fs::path index = reports::writeHtmlReport(dir, results, context);
   o.ci.write(dir, results, context);
+  // stdout stays the path alone, for scripts; the address a browser needs (a bare path loses a
+  // "#…" view in Chromium) goes to the reader on stderr.
   fmt::print("{}\n", index.string());
+  std::fflush(stdout);  // the path before the address when both go to one terminal or file
+  fmt::print(stderr, "open       {}\n", reports::fileUrl(index));  // as `gibench run` ends
   return 0;
 }
 

@@ -9,6 +9,7 @@
 #include "common/cache_paths.h"
 #include "common/input_error.h"
 #include "common/progress.h"
+#include "reports/report_labels.h"
 #include "suites/run_environment.h"
 #include "suites/slurm_submission.h"
 #include "suites/suite_file.h"
@@ -113,8 +114,9 @@ int submitSlurm(const suites::Suite& suite, const suites::RunOptions& options,
   std::fflush(stdout);
   if (!o.wait) return 0;
   const int status = suites::waitForMerge(submission, stderr);
-  fmt::print("merged     exit status {}; report {}\n", status,
-             (options.out_dir / "index.html").string());
+  const fs::path report = options.out_dir / "index.html";
+  fmt::print("merged     exit status {}; report {}\n", status, report.string());
+  fmt::print("open       {}\n", reports::fileUrl(report));
   return status;
 }
 
@@ -149,7 +151,10 @@ int runRun(const RunCommandOptions& o) {
     return outcome.failed == 0 ? 0 : 1;
   }
   const suites::RunOutcome outcome = suites::runSuite(suite, options);
-  printRunSummary(outcome, writeRunReport(outcome, options, o.trend_runs, o.ci), o.ci);
+  const fs::path report = writeRunReport(outcome, options, o.trend_runs, o.ci);
+  printRunSummary(outcome, report, o.ci);
+  // Last, where a reader looks: the address a browser opens (a bare path loses a "#…" view).
+  fmt::print("open       {}\n", reports::fileUrl(report));
   if (outcome.failed == 0) return 0;
   // Jobs this machine could not run: the others were measured and reported; one line and exit
   // code 1, as for any environment error.

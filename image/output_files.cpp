@@ -31,4 +31,14 @@ void writeTextFile(const fs::path& path, std::string_view text) {
   detail::writeBytesAtomically(path, text);
 }
 
+void copyFileAtomically(const fs::path& from, const fs::path& to) {
+  detail::writeAtomically(to, [&](const fs::path& temporary) {
+    std::error_code ec;
+    fs::copy_file(from, temporary, fs::copy_options::overwrite_existing, ec);
+    if (ec)
+      throw InputError(
+          fmt::format("cannot copy '{}' to '{}': {}", from.string(), to.string(), ec.message()));
+  });
+}
+
 }  // namespace gib::image

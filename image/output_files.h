@@ -14,4 +14,8 @@ void checkOutputFile(const std::filesystem::path& path, std::string_view extensi
 // Writes `text` so that readers see the old file or the complete new one.
 void writeTextFile(const std::filesystem::path& path, std::string_view text);
 
+// Copies `from` to `to` so that readers see the old file or the complete copy. Throws
+// gib::InputError naming the files when the copy fails.
+void copyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to);
+
 }  // namespace gib::image

@@ -1,5 +1,7 @@
 #include "metrics/image_metrics.h"
 
+#include "metrics/error_concentration.h"
+
 #include "metrics/tone_map.h"
 
 #include <tbb/blocked_range.h>
@@ -89,21 +91,9 @@ MetricValue computeRelMse(const image::Image& reference, const image::Image& tes
   MetricValue result = perPixelMean(reference, test, [epsilon](double r, double t) {
     return (t - r) * (t - r) / (r * r + epsilon);
   });
-  if (!reject_outliers) return result;
-  // Drop the largest 0.1% of the per-pixel values (fireflies), then average the rest: a
-  // selection (linear time) puts the kept values first, in an order that depends on the data
-  // only, so the sum is deterministic.
-  std::vector<float> values;
-  for (float v : result.map.data())
-    if (std::isfinite(v)) values.push_back(v);
-  if (values.empty()) return result;
-  const auto kept =
-      values.size() - std::size_t(std::floor(kRelMseRejectedFraction * double(values.size())));
-  if (kept < values.size())
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(kept), values.end());
-  double sum = 0;
-  for (std::size_t i = 0; i < kept; ++i) sum += values[i];
-  result.value = sum / double(kept);
+  // Without the largest 0.1% of the per-pixel values (fireflies).
+  if (reject_outliers)
+    result.value = errorConcentration(result.map, kRelMseRejectedFraction).mean_without;
   return result;
 }
 

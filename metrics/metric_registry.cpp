@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "common/join.h"
+#include "metrics/error_concentration.h"
 #include "metrics/mean_bias.h"
 #include "metrics/ssim.h"
 
@@ -28,14 +29,35 @@ constexpr MetricDirection kHigher = MetricDirection::kHigherIsBetter;
 
 // The values of one figure named like its metric.
 std::vector<MetricValueInfo> single(const char* name, MetricDirection direction = kLower) {
-  return {{name, direction}};
+  return {{.name = name, .direction = direction, .label = {}, .description = {}}};
 }
 
 // FLIP's values (addFlip), all errors.
+// The median and quartiles are those of FLIP's weighted histogram (metrics/flip.h: each pixel
+// weighted by its error), not the pixels' own percentiles.
 std::vector<MetricValueInfo> flipValues(const std::string& prefix) {
+  struct Value {
+    const char* suffix;
+    const char* label;
+    const char* description;
+  };
+  static constexpr Value kValues[] = {
+      {"_mean", "mean", "the mean of the per-pixel FLIP map"},
+      {"_median", "weighted median",
+       "the median of FLIP's weighted histogram (pixels weighted by their error), not of the "
+       "pixels"},
+      {"_q1", "weighted first quartile",
+       "the first quartile of FLIP's weighted histogram (pixels weighted by their error)"},
+      {"_q3", "weighted third quartile",
+       "the third quartile of FLIP's weighted histogram (pixels weighted by their error)"},
+      {"_max", "max", "the largest per-pixel FLIP value"},
+  };
   std::vector<MetricValueInfo> values;
-  for (const char* suffix : {"_mean", "_median", "_q1", "_q3", "_max"})
-    values.push_back({prefix + suffix, kLower});
+  for (const Value& v : kValues)
+    values.push_back({.name = prefix + v.suffix,
+                      .direction = kLower,
+                      .label = prefix + " " + v.label,
+                      .description = v.description});
   return values;
 }
 
@@ -50,6 +72,77 @@ Evaluator scalar(
     report.values.emplace_back(name, v.value);
     if (v.map.pixelCount() > 0) report.maps.emplace_back(name, std::move(v.map));
   };
+}
+
+// The fractions of worst pixels whose share of relMSE is reported, and the names of the values.
+struct ConcentrationFigure {
+  double fraction;
+  const char* percent;  // "0.1 %", for people
+  const char* share;    // the worst pixels' share of the sum
+  const char* without;  // relMSE of the other pixels
+};
+constexpr ConcentrationFigure kConcentrationFigures[] = {
+    {0.001, "0.1 %", "relmse_top0p1pct_share", "relmse_trim0p1pct"},
+    {0.01, "1 %", "relmse_top1pct_share", "relmse_trim1pct"},
+};
+
+std::vector<MetricValueInfo> relMseValues() {
+  std::vector<MetricValueInfo> values = {
+      {.name = "relmse", .direction = kLower, .label = {}, .description = {}}};
+  for (const ConcentrationFigure& f : kConcentrationFigures)
+    values.push_back(
+        {.name = f.share,
+         .direction = MetricDirection::kDescriptive,
+         .label = fmt::format("relmse share of worst {}", f.percent),
+         .description = fmt::format("the share of relMSE's sum held by the worst {} of pixels (by "
+                                    "per-pixel relMSE): how concentrated the error is",
+                                    f.percent)});
+  for (const ConcentrationFigure& f : kConcentrationFigures)
+    values.push_back(
+        {.name = f.without,
+         .direction = kLower,
+         .label = fmt::format("relmse without worst {}", f.percent),
+         .description = fmt::format("relMSE over the pixels other than the worst {}", f.percent)});
+  values.push_back({.name = "relmse_agreeing",
+                    .direction = kLower,
+                    .label = "relmse where hits agree",
+                    .description = "relMSE over the pixels where the technique's rasteriser and "
+                                   "the reference's camera ray see the same surface (all pixels "
+                                   "when not checked)"});
+  return values;
+}
+
+// The mean of a one-channel map's finite values where `excluded` is 0.
+double meanOutside(const image::Image& map, const image::Image& excluded) {
+  if (excluded.width() != map.width() || excluded.height() != map.height() ||
+      excluded.channels() != 1)
+    throw std::invalid_argument("the disagreement mask must be one channel of the images' size");
+  double sum = 0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < map.data().size(); ++i)
+    if (excluded.data()[i] == 0 && std::isfinite(map.data()[i])) {
+      sum += map.data()[i];
+      ++count;
+    }
+  return count > 0 ? sum / double(count) : 0.0;
+}
+
+// relMSE, its map, and how concentrated it is (metrics/error_concentration.h), in the order of
+// relMseValues.
+void addRelMse(const image::Image& r, const image::Image& t, const MetricOptions& o,
+               MetricReport& report) {
+  MetricValue relmse = computeRelMse(r, t, o.relative_epsilon, o.reject_outliers);
+  report.values.emplace_back("relmse", relmse.value);
+  std::vector<double> fractions;
+  for (const ConcentrationFigure& f : kConcentrationFigures) fractions.push_back(f.fraction);
+  const std::vector<ErrorConcentration> concentration = errorConcentrations(relmse.map, fractions);
+  for (std::size_t i = 0; i < concentration.size(); ++i)
+    report.values.emplace_back(kConcentrationFigures[i].share, concentration[i].share);
+  for (std::size_t i = 0; i < concentration.size(); ++i)
+    report.values.emplace_back(kConcentrationFigures[i].without, concentration[i].mean_without);
+  report.values.emplace_back(
+      "relmse_agreeing", o.disagreement ? meanOutside(relmse.map, *o.disagreement) : relmse.value);
+  report.maps.emplace_back("relmse", std::move(relmse.map));
 }
 
 // FLIP's figures: the mean, the weighted median and quartiles, the maximum, and the map.
@@ -71,12 +164,12 @@ const std::vector<MetricEntry>& entries() {
       {{"mae", "mean absolute error of linear RGB", single("mae")},
        scalar("mae", [](auto& r, auto& t, auto&) { return computeMae(r, t); })},
       {{"relmse",
-        "relative MSE (x-r)^2/(r^2+eps), eps = 0.01; --reject-outliers drops the top 0.1%",
-        single("relmse")},
-       scalar("relmse",
-              [](auto& r, auto& t, auto& o) {
-                return computeRelMse(r, t, o.relative_epsilon, o.reject_outliers);
-              })},
+        "relative MSE (x-r)^2/(r^2+eps), eps = 0.01; --reject-outliers drops the top 0.1%; with "
+        "how concentrated it is: the share held by the worst 0.1% and 1% of pixels, relMSE "
+        "without them, and relMSE without the pixels whose primary hit the technique and the "
+        "reference disagree on (relmse_agreeing; all pixels when not checked)",
+        relMseValues()},
+       addRelMse},
       {{"mape", "mean absolute percentage error |x-r|/(|r|+eps)", single("mape")},
        scalar("mape",
               [](auto& r, auto& t, auto& o) { return computeMape(r, t, o.relative_epsilon); })},
@@ -139,6 +232,8 @@ double distanceFromIdeal(std::string_view value_name, double value) {
       return -value;
     case MetricDirection::kTowardOne:
       return std::abs(value - 1.0);
+    case MetricDirection::kDescriptive:
+      return 0.0;
   }
   return value;
 }

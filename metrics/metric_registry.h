@@ -19,6 +19,10 @@ struct MetricOptions {
   double relative_epsilon = kRelativeEpsilon;  // ε of relMSE, MAPE, SMAPE
   bool reject_outliers = false;                // relMSE without the top 0.1% of pixels
   FlipViewingConditions flip;
+  // Pixels whose primary hit the test image's renderer and the reference disagree on (one
+  // channel, non-zero: disagree; reference/primary_agreement.h), or null when not checked. Every
+  // value keeps them; relmse_agreeing is relMSE without them.
+  const image::Image* disagreement = nullptr;
 };
 
 // Which way a value improves.
@@ -26,11 +30,19 @@ enum class MetricDirection {
   kLowerIsBetter,   // errors: MSE, relMSE, FLIP
   kHigherIsBetter,  // similarities: PSNR, SSIM
   kTowardOne,       // ratios whose ideal is 1: energy_ratio
+  // Describes an error rather than being one (how concentrated relMSE is): no direction, so a
+  // change is never an improvement or a regression.
+  kDescriptive,
 };
 
 struct MetricValueInfo {
   std::string name;  // "flip_mean"
   MetricDirection direction = MetricDirection::kLowerIsBetter;
+  // For people (the report): a label where the name would mislead ("flip weighted median": a
+  // percentile of FLIP's weighted histogram, not of the pixels), and what this value is when its
+  // metric reports several. Empty: the name, and the metric's description alone.
+  std::string label;
+  std::string description;
 };
 
 struct MetricInfo {

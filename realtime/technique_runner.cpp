@@ -2,6 +2,7 @@
 
 #include "common/environment_error.h"
 #include "common/input_error.h"
+#include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/finished_time.h"
 #include "realtime/gl/gl.h"
 #include "realtime/gl/pass_profiler.h"
@@ -127,6 +128,12 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
     result.image = target.read();
     result.auxiliary = technique->auxiliaryImages();
     result.path_class = technique->pathClass();
+    if (settings.capture_primary_surfaces) {
+      GBuffer gbuffer(settings.width, settings.height);
+      gbuffer.render(*gpu_scene);
+      result.primary = PrimarySurfaces{gl::readTexture(gbuffer.position(), 4),
+                                       gl::readTexture(gbuffer.normal(), 4)};
+    }
   }
   if (context->debug()) {
     const std::vector<std::string> errors = context->takeDebugErrors();

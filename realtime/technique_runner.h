@@ -31,6 +31,17 @@ struct TechniqueRunSettings {
   std::vector<int> capture_after;
   gl::ContextOptions context;
   TechniqueServices services;  // lent to the technique before prepare()
+  // Also rasterise the camera's G-buffer after the frames (unprofiled) and return what each pixel
+  // centre sees, for the harness to compare with the reference's primary rays.
+  bool capture_primary_surfaces = false;
+};
+
+// What the rasteriser sees through each pixel centre (RGBA, pixel (0,0) top left): world position
+// with the distance along the ray in w (negative where no surface is seen), and the geometric
+// normal with the material index in w. The layout ref::comparePrimarySurfaces reads.
+struct PrimarySurfaces {
+  image::Image position;
+  image::Image normal;
 };
 
 // The image after a number of iterations, and the iteration time spent to get there.
@@ -52,6 +63,7 @@ struct TechniqueRunResult {
   double prepare_ms = 0;  // Technique::prepare
   double iterate_ms = 0;  // all step() calls
   int iterations = 0;
+  std::optional<PrimarySurfaces> primary;  // when capture_primary_surfaces
   scene::PathClass path_class;
   gl::GlIdentity gl;
 };

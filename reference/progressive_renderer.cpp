@@ -62,16 +62,26 @@ class CameraBatch {
     const auto pixel = std::uint32_t(y * settings.width + x);
     samplers_.clear();
     rays_.clear();
+    const bool centre = settings.pixel_sampling == PixelSampling::kCenter;
     for (std::uint32_t s = first; s < end; ++s) {
       samplers_.emplace_back(settings.seed, pixel, s, replicas, settings.sampler);
-      // Box filter: a uniform point in the pixel.
-      const glm::vec2 position = glm::vec2(x, y) + samplers_.back().pixelPosition();
+      // Box filter: a uniform point in the pixel. At the centre, the sample's first two
+      // dimensions go unused, so the lighting's dimensions are those of the box filter's samples.
+      const glm::vec2 position =
+          glm::vec2(x, y) + (centre ? glm::vec2(0.5f) : samplers_.back().pixelPosition());
       rays_.push_back(
           {camera.origin, scene::cameraRayDirection(camera, settings.width, settings.height,
                                                     position.x, position.y)});
     }
     hits_.resize(rays_.size());
-    tracer.embree().intersect(rays_, hits_, /*coherent=*/true);
+    if (centre) {
+      // One ray, the same for every sample: traced once (a single ray's hit is bit-identical to
+      // a batch's, tested), and its hit shared.
+      hits_.front() = tracer.embree().intersect(rays_.front().origin, rays_.front().direction);
+      std::fill(hits_.begin() + 1, hits_.end(), hits_.front());
+    } else {
+      tracer.embree().intersect(rays_, hits_, /*coherent=*/true);
+    }
   }
 
   // The path of the batch's i-th sample, from its camera ray's hit on.
@@ -127,6 +137,19 @@ SamplerKind parseSamplerName(const std::string& name) {
   if (name == "independent") return SamplerKind::kIndependent;
   throw InputError(fmt::format(
       "unknown sampler '{}'; give sobol (low discrepancy, the default) or independent", name));
+}
+
+const char* pixelSamplingName(PixelSampling sampling) {
+  return sampling == PixelSampling::kCenter ? "center" : "area";
+}
+
+PixelSampling parsePixelSampling(const std::string& name) {
+  if (name == "area") return PixelSampling::kArea;
+  if (name == "center") return PixelSampling::kCenter;
+  throw InputError(fmt::format(
+      "unknown pixel sampling '{}'; give center (camera rays through pixel centres, as a "
+      "rasteriser samples) or area (a box filter over each pixel)",
+      name));
 }
 
 std::uint32_t replicasOf(const RenderSettings& settings) {

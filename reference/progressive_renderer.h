@@ -13,6 +13,17 @@
 
 namespace gib::ref {
 
+// Where a pixel's camera rays go (docs/rendering.md, "Pixel sampling").
+enum class PixelSampling {
+  // A uniform point in the pixel for each sample: the pixel's area integral under a box filter,
+  // anti-aliased. What another renderer (Cycles) computes; the reference's own checks use it.
+  kArea,
+  // Every sample through the pixel's centre, the rasteriser's sample position: one primary hit
+  // per pixel (the G-buffer's), and all the samples spent on its lighting. What a real-time
+  // technique is measured against, so its error is its lighting's, not anti-aliasing's.
+  kCenter,
+};
+
 struct RenderSettings {
   int width = 512;
   int height = 512;
@@ -22,6 +33,7 @@ struct RenderSettings {
   // must divide spp. 0: automatic (defaultReplicas).
   std::uint32_t replicas = 0;
   SamplerKind sampler = SamplerKind::kSobol;
+  PixelSampling pixel_sampling = PixelSampling::kArea;
   PathClass path_class;
   int threads = 0;        // 0: all cores. The image does not depend on it.
   bool progress = false;  // draw a progress bar on a terminal
@@ -67,6 +79,10 @@ std::uint32_t replicasOf(const RenderSettings& settings);
 const char* samplerName(SamplerKind kind);
 // Throws gib::InputError naming the choices for any other name.
 SamplerKind parseSamplerName(const std::string& name);
+// "area" or "center", as the command line, suites, metadata and results name them.
+const char* pixelSamplingName(PixelSampling sampling);
+// Throws gib::InputError naming the choices for any other name.
+PixelSampling parsePixelSampling(const std::string& name);
 
 RenderResult renderReference(const scene::Scene& scene, const RenderSettings& settings,
                              const CheckpointCallback& on_checkpoint = {});

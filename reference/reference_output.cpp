@@ -22,6 +22,7 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
       {"seed", s.seed},
       {"sampler", samplerName(s.sampler)},
       {"replicas", replicasOf(s)},
+      {"pixel_sampling", pixelSamplingName(s.pixel_sampling)},
       {"min_bounces", s.path_class.min_bounces},
       {"max_bounces", unlimited ? nlohmann::ordered_json("unlimited")
                                 : nlohmann::ordered_json(s.path_class.max_bounces)}};
@@ -31,6 +32,7 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
   m["gibench/seed"] = std::to_string(s.seed);
   m["gibench/sampler"] = samplerName(s.sampler);
   m["gibench/replicas"] = std::to_string(replicasOf(s));
+  m["gibench/pixel_sampling"] = pixelSamplingName(s.pixel_sampling);
   m["gibench/embree_version"] = embreeVersion();
   m["gibench/layers"] =
       "RGB: mean radiance (linear Rec.709); variance: variance of the per-pixel mean, from the "

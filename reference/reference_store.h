@@ -16,6 +16,7 @@
 #pragma once
 
 #include "image/image.h"
+#include "reference/progressive_renderer.h"
 #include "scene/path_class.h"
 #include "scene/scene.h"
 
@@ -42,6 +43,9 @@ struct ReferenceSpec {
   std::uint32_t spp = 1024;
   std::uint64_t seed = 0;
   scene::PathClass path_class;
+  // Where the camera rays go (reference/progressive_renderer.h). A pixel-centre reference has a
+  // key of its own; a box-filtered one keeps the key it had before the choice existed.
+  PixelSampling pixel_sampling = PixelSampling::kArea;
 };
 
 // Everything entry.json records.

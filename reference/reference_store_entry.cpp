@@ -43,6 +43,8 @@ StoreEntry entryFromJson(const ordered_json& j) {
   e.spec.seed = spec.at("seed").get<std::uint64_t>();
   e.spec.path_class.min_bounces = readBounceLimit(spec.at("min_bounces"));
   e.spec.path_class.max_bounces = readBounceLimit(spec.at("max_bounces"));
+  // Recorded since pixel-centre references exist; an entry without it is box-filtered.
+  e.spec.pixel_sampling = parsePixelSampling(spec.value("pixel_sampling", std::string("area")));
   e.scene_name = j.at("scene_name").get<std::string>();
   e.scene_hash = j.at("scene_hash").get<std::string>();
   e.renderer_version = j.at("renderer_version").get<std::string>();
@@ -65,7 +67,8 @@ ordered_json entryToJson(const StoreEntry& e) {
             {"spp", e.spec.spp},
             {"seed", e.spec.seed},
             {"min_bounces", bounceLimit(e.spec.path_class.min_bounces)},
-            {"max_bounces", bounceLimit(e.spec.path_class.max_bounces)}}},
+            {"max_bounces", bounceLimit(e.spec.path_class.max_bounces)},
+            {"pixel_sampling", pixelSamplingName(e.spec.pixel_sampling)}}},
           {"scene_name", e.scene_name},
           {"scene_hash", e.scene_hash},
           {"renderer_version", e.renderer_version},
@@ -116,6 +119,7 @@ RenderSettings renderSettingsOf(const ReferenceSpec& spec, bool progress) {
   settings.spp = spec.spp;
   settings.seed = spec.seed;
   settings.path_class = spec.path_class;
+  settings.pixel_sampling = spec.pixel_sampling;
   settings.progress = progress;
   return settings;
 }

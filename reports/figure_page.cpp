@@ -126,6 +126,7 @@ std::string figurePage(const fs::path& run_dir, const results::RunResults& resul
       "{} of suite {} · run {}</p>\n",
       escapeHtml(results.run.suite), escapeHtml(figure.title), escapeHtml(figure.name),
       escapeHtml(results.run.suite), escapeHtml(results.run.id));
+  body += rendererNote(results.run.gl_renderer, "the run's technique jobs");
   const std::vector<std::string> jobs = figureJobs(figure);
   const std::string paper =
       paperTable(results, std::set<std::string>(jobs.begin(), jobs.end()), kDepth);

@@ -1,12 +1,16 @@
 // The HTML report of a run: a directory of static pages that opens from disk with no network.
-// index.html holds the run's facts and the scene × technique matrix (primary error metric and
-// frame time per job, coloured against the previous run); report/<slug>.html holds a page per job
-// (reference, technique image, amplified difference and FLIP map to swap between, metric tables,
-// per-pass timing table and bar chart, convergence plot with its fitted slope, the paper's
-// numbers beside ours, trend charts over recent runs); report/figure-<name>.html a page per
-// [[figure]] of a figure suite (reports/figure_page.h), and figures/ the standalone files for
-// papers: each chart as SVG, each figure as PNG (reports/figure_files.h). Charts are inline SVG;
-// styles and scripts are inline.
+// Every page names the GL renderer its timings come from and flags a software rasteriser.
+// index.html holds the run's facts and the scene × technique matrix (primary error metric against
+// the named reference and, where the class is narrower, the full one; frame time, iterations'
+// time and preparation per job, coloured against the previous run; the metric's legend from the
+// registry); report/<slug>.html holds a page per job (reference, technique image, amplified
+// difference and FLIP map to swap between, the rasteriser's disagreement mask, links to the
+// full-precision files, metric tables with their references and legend, per-pass timing table on
+// both clocks with bar chart and per-frame strip plot, convergence plot with its fitted metric
+// and slope, the paper's numbers beside ours, trend charts over recent runs);
+// report/figure-<name>.html a page per [[figure]] of a figure suite (reports/figure_page.h), and
+// figures/ the standalone files for papers: each chart as SVG, each figure as PNG
+// (reports/figure_files.h). Charts are inline SVG; styles and scripts are inline.
 #pragma once
 
 #include "results/results.h"

@@ -21,8 +21,9 @@ struct Layer {
   const char* name;        // the viewer's handle (viewer.js)
   const char* label;       // what the layer menus call it
   std::string alt;         // what the picture shows
-  const std::string* png;  // its PNG: the fallback of a run without linear data
-  bool linear = false;     // in the viewer data
+  const std::string* png;  // its PNG: the fallback of a run without linear data; null for a layer
+                           // that exists only as linear data
+  bool linear = false;     // in the viewer data, or made by the viewer from it
 };
 
 bool exists(const fs::path& run_dir, const std::string& path) {
@@ -63,24 +64,26 @@ std::string imageViewer(const fs::path& run_dir, const results::JobResult& job) 
       !out.reference_viewer_data.empty() && exists(run_dir, out.reference_viewer_data);
   const bool linear = job_data && reference_data;
   const bool has_image = !out.image_png.empty() && exists(run_dir, out.image_png);
+  // The viewer makes the signed and relative errors from the image and the reference.
+  const bool errors = linear && has_image;
   const std::vector<Layer> candidates = {
       {"reference", "Reference", fmt::format("Reference ({})", job.reference.path_class),
        &out.reference_png, reference_data},
       {"image", is_reference ? "Test render" : "Image",
        is_reference ? "Test render of the reference renderer" : "Image of " + job.technique,
        &out.image_png, job_data && has_image},
-      {"difference", "Difference", "Difference from the reference", &out.difference_png,
-       linear && has_image},
+      {"difference", "Difference", "Difference from the reference", &out.difference_png, errors},
+      {"signed", "Signed difference", "", nullptr, errors},
+      {"relative", "Relative error", "", nullptr, errors},
       {"flip", "FLIP", "FLIP error map (magma colour map, scale below)", &out.flip_png,
        job_data && !out.flip_png.empty()},
-      {"stderr", "Standard error", "Standard error of the reference's mean",
-       &out.reference_viewer_data, reference_data},
+      {"stderr", "Standard error", "", nullptr, reference_data},
   };
   std::vector<Layer> layers;
   std::vector<std::string> absent;
   std::string pngs;
   for (const Layer& layer : candidates) {
-    const bool png = layer.png != &out.reference_viewer_data && !layer.png->empty();
+    const bool png = layer.png && !layer.png->empty();
     if (png && !exists(run_dir, *layer.png)) {
       absent.push_back(*layer.png);
       continue;
@@ -88,8 +91,9 @@ std::string imageViewer(const fs::path& run_dir, const results::JobResult& job) 
     if (png)
       pngs += fmt::format("<img class=\"layer\" data-layer=\"{}\" src=\"{}\" alt=\"{}\">",
                           layer.name, escapeHtml(outputHref(*layer.png, 1)), escapeHtml(layer.alt));
-    // The standard error exists only as linear data (a reference of one replica has none).
-    if (png || (layer.linear && std::string_view(layer.name) == "stderr")) layers.push_back(layer);
+    // A layer without a PNG is offered only with its linear data (a reference of one replica
+    // has no standard error).
+    if (png || (!layer.png && layer.linear)) layers.push_back(layer);
   }
   std::string notes;
   if (!absent.empty()) {
@@ -116,6 +120,16 @@ std::string imageViewer(const fs::path& run_dir, const results::JobResult& job) 
     for (const std::string* path : {&out.reference_viewer_data, &out.viewer_data})
       scripts += fmt::format("<script src=\"{}\"></script>\n", escapeHtml(outputHref(*path, 1)));
   }
+  // Each pane in a box with its full-window button; the colour bars and the readout are filled
+  // in by viewer.js.
+  const auto pane = [](const char* id) {
+    return fmt::format(
+        "<div class=\"viewer-pane\" data-pane-box=\"{0}\"><canvas data-pane=\"{0}\"></canvas>"
+        "<button type=\"button\" class=\"viewer-full-button\" data-full=\"{0}\" "
+        "aria-pressed=\"false\" title=\"Fill the window with this pane (Esc: back)\">Full "
+        "window</button></div>",
+        id);
+  };
   std::string html = fmt::format(
       "<div class=\"viewer\" data-width=\"{}\" data-height=\"{}\" data-a=\"{}\" data-b=\"{}\"{} "
       "data-magma=\"{}\">\n<div class=\"viewer-tools\">{} {} <span class=\"viewer-modes\">"
@@ -123,20 +137,27 @@ std::string imageViewer(const fs::path& run_dir, const results::JobResult& job) 
       "data-mode=\"wipe\">Wipe</button></span> <label>Exposure <input type=\"range\" "
       "data-role=\"exposure\" min=\"-10\" max=\"10\" step=\"0.5\" value=\"0\"> <output "
       "data-role=\"exposure-value\">+0 EV</output></label> <label><input type=\"checkbox\" "
-      "data-role=\"false-colour\"> False colour</label> <span class=\"viewer-zoom\">Zoom <button "
-      "type=\"button\" data-zoom=\"out\">−</button><output data-role=\"zoom\"></output><button "
-      "type=\"button\" data-zoom=\"in\">+</button><button type=\"button\" "
-      "data-zoom=\"fit\">Fit</button></span></div>\n<div class=\"viewer-stage\"><canvas "
-      "data-pane=\"a\"></canvas><canvas data-pane=\"b\"></canvas></div>\n<input type=\"range\" "
-      "data-role=\"wipe\" class=\"viewer-wipe\" min=\"0\" max=\"1\" step=\"0.001\" value=\"0.5\" "
-      "aria-label=\"wipe position\" hidden>\n<p class=\"viewer-readout\" data-role=\"readout\">"
-      "Point at a pixel for its values; click to pin it.</p>\n<div class=\"viewer-sources\" "
-      "hidden>{}</div>\n</div>\n{}",
+      "data-role=\"false-colour\"> False colour</label> <label title=\"Error layers: the colour "
+      "map spans the layer's values (to their 99th percentile); off: it spans 2^-exposure (FLIP: "
+      "0 to 1)\"><input type=\"checkbox\" data-role=\"auto-range\" checked> Auto range</label> "
+      "<span class=\"viewer-zoom\">Zoom <button type=\"button\" data-zoom=\"out\">−</button>"
+      "<output data-role=\"zoom\"></output><button type=\"button\" data-zoom=\"in\">+</button>"
+      "<button type=\"button\" data-zoom=\"fit\">Fit</button></span></div>\n<div "
+      "class=\"viewer-stage\">{}{}</div>\n<input type=\"range\" data-role=\"wipe\" "
+      "class=\"viewer-wipe\" min=\"0\" max=\"1\" step=\"0.001\" value=\"0.5\" "
+      "aria-label=\"wipe position\" hidden>\n<div class=\"viewer-scales\"><div "
+      "class=\"viewer-scale\" data-scale=\"a\" hidden></div><div class=\"viewer-scale\" "
+      "data-scale=\"b\" hidden></div></div>\n<div class=\"viewer-readout\" "
+      "data-role=\"readout\">Point at a pixel for its values; click to pin it.</div>\n<div "
+      "class=\"viewer-sources\" hidden>{}</div>\n</div>\n{}",
       job.width, job.height, a, b, data_attributes, magmaHex(), selectMenu("a", "Left", layers, a),
-      selectMenu("b", "Right", layers, b), pngs, scripts);
-  html += linear ? "<p class=\"muted\">Wheel: zoom about the pointer · drag: pan (in wipe mode, "
-                   "drag the line to move it) · exposure and false colour act on the linear "
-                   "values · the view is kept in the address, to link to.</p>\n"
+      selectMenu("b", "Right", layers, b), pane("a"), pane("b"), pngs, scripts);
+  html += linear ? "<p class=\"muted\">Wheel: zoom about the pointer, in proportion to the "
+                   "wheel's turn · drag: pan (in wipe mode, drag the line to move it) · exposure "
+                   "and false colour act on the linear values; error layers show their values "
+                   "through a colour map with its bar (signed difference: blue where the image is "
+                   "darker than the reference, red where brighter) · Full window: one pane fills "
+                   "the window (Esc returns) · the view is kept in the address, to link to.</p>\n"
                  : "<p class=\"note\">This run has no linear viewer data (written before the "
                    "viewer had it): the pictures are its PNGs, without exposure or values.</p>\n";
   if (has("flip")) html += flipColorBar() + "\n";

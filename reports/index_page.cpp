@@ -3,6 +3,7 @@
 #include "reports/figure_charts.h"
 
 #include "reports/html_text.h"
+#include "reports/metric_labels.h"
 #include "reports/number_format.h"
 #include "reports/report_labels.h"
 #include "reports/report_page.h"
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace gib::reports {
@@ -22,10 +24,7 @@ namespace fs = std::filesystem;
 // not there.
 std::string thumbnail(const fs::path& run_dir, const std::string& path, const std::string& alt,
                       const char* css_class = "thumb") {
-  std::error_code ec;
-  if (path.empty() ||
-      !fs::is_regular_file(fs::path(path).is_absolute() ? fs::path(path) : run_dir / path, ec))
-    return {};
+  if (!outputPresent(run_dir, path)) return {};
   return fmt::format("<img class=\"{}\" src=\"{}\" alt=\"{}\" decoding=\"async\">", css_class,
                      escapeHtml(outputHref(path, 0)), escapeHtml(alt));
 }
@@ -159,6 +158,60 @@ std::vector<std::string> orderedUnique(const std::vector<results::JobResult>& jo
   return names;
 }
 
+std::optional<double> valueOf(const results::NamedValues& values, const std::string& name) {
+  for (const auto& [key, value] : values)
+    if (key == name) return value;
+  return std::nullopt;
+}
+
+// What the job's class metrics measure, short: the reference's path class and pixel sampling, or
+// for a reference job its checkpoint against the stored reference.
+std::string classReferenceLabel(const results::JobResult& job) {
+  const std::string checkpoint = checkpointComparisonText(job);
+  return checkpoint.empty() ? referenceLabel(job.reference) : checkpoint;
+}
+
+// One number of a job with the reference it is measured against beside it: "relmse 0.0021 vs
+// LE + LDE, pixel centres".
+std::string metricLine(const std::string& metric, double value, const results::MetricChange* change,
+                       const std::string& against) {
+  return fmt::format("<div>{} {} <span class=\"against\">vs {}</span></div>",
+                     metricLabelHtml(metric), verdictSpan(formatNumber(value), change),
+                     escapeHtml(against));
+}
+
+// The primary metric against the class reference and, when the class is narrower, against the
+// full one: what the technique approximates badly, and what it leaves out as well.
+std::string metricLines(const results::RunResults& results, const results::JobResult& job,
+                        const std::optional<JobComparison>& compared) {
+  const std::string& metric = results.primary_metric;
+  std::string html;
+  if (const std::optional<double> value = valueOf(job.metrics, metric))
+    html += metricLine(metric, *value, compared ? compared->findMetric(metric) : nullptr,
+                       classReferenceLabel(job));
+  if (const std::optional<double> full = valueOf(job.metrics_full, metric);
+      full && job.full_reference)
+    html += metricLine(metric, *full, compared ? compared->findMetric("full:" + metric) : nullptr,
+                       "full: " + referenceLabel(*job.full_reference));
+  return html;
+}
+
+// The frame time, and for an iterative technique its iterations' total time beside it (what the
+// frame time leaves out), and the precomputation before either.
+std::string timeLines(const results::JobResult& job, const std::optional<JobComparison>& compared) {
+  std::string html;
+  if (const std::optional<double> frame = job.frameMedianMs()) {
+    const std::optional<results::TimingChange> timing = compared ? compared->timing : std::nullopt;
+    html += fmt::format("<div>frame {}</div>", verdictSpan(formatMilliseconds(*frame), timing));
+  }
+  if (job.iterations > 0)
+    html += fmt::format("<div>{} it. in {}</div>", job.iterations,
+                        escapeHtml(formatMilliseconds(job.iterate_ms)));
+  if (job.prepare_ms > 0)
+    html += fmt::format("<div>prepare {}</div>", escapeHtml(formatMilliseconds(job.prepare_ms)));
+  return html;
+}
+
 std::string matrixEntry(const fs::path& run_dir, const results::RunResults& results,
                         const results::JobResult& job, bool name_case,
                         const RunComparison& comparison) {
@@ -171,17 +224,19 @@ std::string matrixEntry(const fs::path& run_dir, const results::RunResults& resu
       verdictClass(compared ? std::optional(compared->overall) : std::nullopt),
       escapeHtml(urlPath(jobPageFile(job))), jobThumbnail(run_dir, job), escapeHtml(label));
   if (job.failed()) html += "<div class=\"failure\">failed</div>";
-  if (const std::optional<double> value = job.metric(results.primary_metric)) {
-    const results::MetricChange* change =
-        compared ? compared->findMetric(results.primary_metric) : nullptr;
-    html += fmt::format("<div>{} {}</div>", escapeHtml(results.primary_metric),
-                        verdictSpan(formatNumber(*value), change));
-  }
-  if (const std::optional<double> frame = job.frameMedianMs()) {
-    const std::optional<results::TimingChange> timing = compared ? compared->timing : std::nullopt;
-    html += fmt::format("<div>frame {}</div>", verdictSpan(formatNumber(*frame) + " ms", timing));
-  }
-  return html + "</div>";
+  return html + metricLines(results, job, compared) + timeLines(job, compared) + "</div>";
+}
+
+// What "vs …" beside a number means, and the definition of the metric shown.
+std::string matrixLegend(const results::RunResults& results) {
+  std::string html =
+      "<p class=\"muted\">vs: the reference a number is measured against, by its path class and "
+      "where its camera rays sample each pixel. Pixel centres: as the rasteriser samples, so "
+      "only the technique's lighting differs; box-filtered over the pixel: an anti-aliased "
+      "reference, which also counts the rasteriser's aliasing as error. A reference job's "
+      "number measures its last convergence checkpoint against the stored reference.</p>\n";
+  if (!results.primary_metric.empty()) html += metricLegend({results.primary_metric});
+  return html;
 }
 
 std::string matrixSection(const fs::path& run_dir, const results::RunResults& results,
@@ -222,11 +277,14 @@ std::string matrixSection(const fs::path& run_dir, const results::RunResults& re
     table.addRow(cells);
   }
   const std::string intro = fmt::format(
-      "<p class=\"muted\">Each job: its image, {} against the reference of its path class and the "
-      "median frame time, with the change from the previous run in brackets. Follow a job to its "
-      "images, metrics and timings.</p>\n",
-      escapeHtml(results.primary_metric.empty() ? "the error" : results.primary_metric));
-  return htmlSection("matrix", "Scenes × techniques", intro + table.html());
+      "<p class=\"muted\">Each job: its image, {} against the reference of its path class and, "
+      "when that class is narrower, against the full reference; the median frame time, an "
+      "iterative technique's iterations and their total time, and the preparation before them; "
+      "the change from the previous run in brackets. Follow a job to its images, metrics and "
+      "timings.</p>\n",
+      escapeHtml(results.primary_metric.empty() ? "the error"
+                                                : metricLabel(results.primary_metric)));
+  return htmlSection("matrix", "Scenes × techniques", intro + table.html() + matrixLegend(results));
 }
 
 }  // namespace
@@ -234,6 +292,7 @@ std::string matrixSection(const fs::path& run_dir, const results::RunResults& re
 std::string indexPage(const fs::path& run_dir, const results::RunResults& results,
                       const RunComparison& comparison) {
   std::string body = fmt::format("<h1>GI Bench report: {}</h1>\n", escapeHtml(results.run.suite));
+  body += rendererNote(results.run.gl_renderer, "the run's technique jobs");
   if (!results.run.suite_description.empty())
     body += fmt::format("<p>{}</p>\n", escapeHtml(results.run.suite_description));
   // Pictures first: what changed, then every job; the run's facts last.

@@ -1,20 +1,14 @@
-// The chart-bearing sections of a job page: per-pass timings (table and bar chart, with the
-// upload, prepare and iterate phases), convergence on log-log axes with the fitted slope, and
-// trends over recent runs. Each returns "" when the job has nothing to show for it.
+// The chart-bearing sections of a job page besides its timings (reports/timing_sections.h):
+// convergence on log-log axes with the fitted slope, and trends over recent runs. Each returns ""
+// when the job has nothing to show for it.
 #pragma once
 
 #include "reports/html_report.h"
-#include "reports/run_comparison.h"
 #include "results/results.h"
 
 #include <string>
 
 namespace gib::reports {
-
-std::string timingsSection(const results::JobResult& job,
-                           const std::optional<JobComparison>& compared);
-// The per-pass time of each iteration of an iterative technique; empty when it has none.
-std::string iterationTimingsSection(const results::JobResult& job);
 
 std::string convergenceSection(const results::JobResult& job, const std::string& primary_metric);
 

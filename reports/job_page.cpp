@@ -5,23 +5,27 @@
 #include "reports/html_text.h"
 #include "reports/image_viewer.h"
 #include "reports/job_charts.h"
+#include "reports/metric_labels.h"
 #include "reports/number_format.h"
 #include "reports/paper_table.h"
 #include "reports/report_labels.h"
 #include "reports/report_page.h"
+#include "reports/timing_sections.h"
 
 #include <fmt/format.h>
 
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace gib::reports {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 std::string referenceText(const results::ReferenceUse& use) {
-  return fmt::format("{}: {} spp, seed {}, {}; {}", use.key, use.spp, use.seed, use.path_class,
+  return fmt::format("{}: {} spp, seed {}, {}; {}", use.key, use.spp, use.seed, referenceLabel(use),
                      use.store_hit ? "from the store"
                                    : fmt::format("rendered by this run in {} s",
                                                  formatNumber(use.render_seconds, 3)));
@@ -45,6 +49,7 @@ std::string jobFacts(const results::JobResult& job) {
       {"parameters", formatAssignments(job.parameters)},
       {"image", job.width > 0 ? fmt::format("{} × {} pixels", job.width, job.height) : ""},
       {"path class", job.path_class},
+      {"compares", checkpointComparisonText(job)},
       {"statistics",
        joinNames(job.statistics, ", ",
                  [](const auto& s) { return s.first + " " + formatCount(s.second); })},
@@ -70,6 +75,28 @@ std::string failureSection(const results::JobResult& job) {
   return htmlSection("failure", "The job failed", html);
 }
 
+// The heading of the class metrics' column: what they measure the job's image against.
+std::string classColumnHeading(const results::JobResult& job) {
+  const std::string checkpoint = checkpointComparisonText(job);
+  if (!checkpoint.empty())
+    return fmt::format("{} ({})", checkpoint, pixelSamplingText(job.reference.pixel_sampling));
+  return fmt::format("against the reference of its class ({})", referenceLabel(job.reference));
+}
+
+std::string fullColumnHeading(const results::JobResult& job) {
+  return fmt::format("against the full reference ({})",
+                     job.full_reference ? referenceLabel(*job.full_reference) : "all paths");
+}
+
+// What the metrics measure: a technique's error, or a reference job's checkpoint's distance.
+std::string metricsNote(const results::JobResult& job) {
+  if (!checkpointComparisonText(job).empty())
+    return "An independent render to the last convergence checkpoint against the stored "
+           "reference: how far that many samples per pixel are from it.";
+  return "Against the reference of the technique's own path class: its approximation error; "
+         "against the full reference: also what the class leaves out.";
+}
+
 std::string metricsSection(const results::JobResult& job,
                            const std::optional<JobComparison>& compared) {
   if (job.metrics.empty() && job.metrics_full.empty()) return {};
@@ -79,10 +106,8 @@ std::string metricsSection(const results::JobResult& job,
   for (const auto& [name, value] : job.metrics_full)
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
 
-  std::vector<TableColumn> columns = {
-      {"metric"},
-      {fmt::format("against the reference of its class ({})", job.reference.path_class), true}};
-  if (full) columns.push_back({"against the full reference (all paths)", true});
+  std::vector<TableColumn> columns = {{"metric"}, {classColumnHeading(job), true}};
+  if (full) columns.push_back({fullColumnHeading(job), true});
   if (compared) columns.push_back({"previous run", true});
   HtmlTable table(columns);
   auto value_cell = [&](const results::NamedValues& values, const std::string& name,
@@ -94,7 +119,7 @@ std::string metricsSection(const results::JobResult& job,
     return std::string();
   };
   for (const std::string& name : names) {
-    std::vector<std::string> row = {escapeHtml(name), value_cell(job.metrics, name, name)};
+    std::vector<std::string> row = {metricLabelHtml(name), value_cell(job.metrics, name, name)};
     if (full) row.push_back(value_cell(job.metrics_full, name, "full:" + name));
     if (compared) {
       const results::MetricChange* change = compared->findMetric(name);
@@ -102,14 +127,75 @@ std::string metricsSection(const results::JobResult& job,
     }
     table.addRow(row);
   }
-  const std::string note =
-      "<p class=\"muted\">Against the reference of the technique's own path class: its "
-      "approximation error; against the full reference: also what the class leaves out." +
-      std::string(compared ? " Coloured against the previous run (red: worse beyond tolerance, "
-                             "green: better)."
-                           : "") +
-      "</p>\n";
-  return htmlSection("metrics", "Metrics", note + table.html());
+  const std::string note = "<p class=\"muted\">" + metricsNote(job) +
+                           " The reference's pixel sampling: " +
+                           escapeHtml(pixelSamplingText(job.reference.pixel_sampling)) + "." +
+                           (compared ? " Coloured against the previous run (red: worse beyond "
+                                       "tolerance, green: better)."
+                                     : "") +
+                           "</p>\n";
+  return htmlSection("metrics", "Metrics", note + table.html() + metricLegend(names));
+}
+
+// The full-precision files behind what the page shows, linked so that a reader can measure them
+// again; only files that are there.
+std::string filesSection(const fs::path& run_dir, const results::JobResult& job) {
+  const std::pair<std::string, std::string> files[] = {
+      {job.outputs.image, "the job's image (EXR)"},
+      {job.outputs.reference_exr, "the reference of its class (EXR)"},
+      {job.outputs.full_reference_exr, "the full reference (EXR)"},
+      {"results.json", "the run's results"},
+      {job.outputs.timings_json, "every frame's per-pass timings"},
+  };
+  std::string items;
+  for (const auto& [path, what] : files)
+    if (outputPresent(run_dir, path))
+      items += fmt::format("<li><a href=\"{}\">{}</a>: {}</li>\n", escapeHtml(outputHref(path, 1)),
+                           escapeHtml(fs::path(path).filename().string()), escapeHtml(what));
+  if (items.empty()) return {};
+  return htmlSection("files", "Full-precision files", "<ul class=\"files\">\n" + items + "</ul>\n");
+}
+
+// Where the rasteriser and the reference's camera rays hit different surfaces: those pixels'
+// error is geometry, not lighting.
+std::string disagreementSection(const fs::path& run_dir, const results::JobResult& job) {
+  // A mask of no pixel is a black picture: the count says it.
+  const bool mask =
+      job.disagreement_pixels != 0 && outputPresent(run_dir, job.outputs.disagreement_png);
+  if (job.disagreement_pixels < 0 && !mask) return {};
+  std::string html = "<p>";
+  if (job.disagreement_pixels >= 0) {
+    const double pixels = double(job.width) * double(job.height);
+    html += fmt::format("<strong>{}</strong> pixel{}", job.disagreement_pixels,
+                        job.disagreement_pixels == 1 ? "" : "s");
+    if (pixels > 0)
+      html += fmt::format(" ({})", formatShare(double(job.disagreement_pixels) / pixels));
+    html +=
+        " whose primary hit differs between the rasteriser and the reference's camera rays "
+        "through the pixel centres (silhouettes, shared edges): their error is geometry, not "
+        "lighting.";
+  } else {
+    html +=
+        "The pixels whose primary hit differs between the rasteriser and the reference's "
+        "camera rays (white).";
+  }
+  html += "</p>\n";
+  if (mask)
+    html += fmt::format(
+        "<img class=\"disagreement\" src=\"{}\" alt=\"Pixels where the rasteriser and the ray "
+        "tracer disagree on the primary hit\">\n",
+        escapeHtml(outputHref(job.outputs.disagreement_png, 1)));
+  return htmlSection("disagreement", "Where rasteriser and ray tracer disagree", html);
+}
+
+// The renderer behind the page's timings: the job's own (a run spread over machines may differ
+// per job), else the run's.
+std::string jobRendererNote(const results::RunResults& results, const results::JobResult& job) {
+  if (job.technique == "reference")
+    return rendererNote(results.run.gl_renderer,
+                        "the run's technique jobs; this reference is path traced on the CPU");
+  if (!job.execution.gl_renderer.empty()) return rendererNote(job.execution.gl_renderer);
+  return rendererNote(results.run.gl_renderer, "the run's");
 }
 
 std::string paperSection(const results::RunResults& results, const results::JobResult& job) {
@@ -129,10 +215,13 @@ std::string jobPage(const std::filesystem::path& run_dir, const results::RunResu
       "{} · run {}</p>\n",
       escapeHtml(results.run.suite), escapeHtml(job.id), escapeHtml(job.scene),
       escapeHtml(job.technique), escapeHtml(results.run.id));
+  body += jobRendererNote(results, job);
   body += failureSection(job);
   body += jobFacts(job);
   body += metricsSection(job, compared);
   body += htmlSection("images", "Images", imageViewer(run_dir, job));
+  body += disagreementSection(run_dir, job);
+  body += filesSection(run_dir, job);
   if (const std::string aux = auxiliaryImages(run_dir, job); !aux.empty())
     body += htmlSection("auxiliary", "The technique's internal state", aux);
   body += timingsSection(job, compared);

@@ -55,6 +55,17 @@ std::string formatShare(double fraction) {
   return fmt::format("{:.1f}%", 100.0 * fraction);
 }
 
+TimeUnit timeUnitFor(double largest_ms) {
+  if (std::isfinite(largest_ms) && std::abs(largest_ms) < 1.0) return {"\u00b5s", 1000.0};
+  return {"ms", 1.0};
+}
+
+std::string formatMilliseconds(double ms) {
+  if (!std::isfinite(ms)) return formatNumber(ms);
+  const TimeUnit unit = timeUnitFor(ms == 0 ? 1.0 : ms);  // "0 ms", not "0 µs"
+  return fmt::format("{} {}", formatNumber(ms * unit.per_ms), unit.symbol);
+}
+
 std::string withMinusSign(std::string text) {
   if (!text.empty() && text.front() == '-') text.replace(0, 1, "\u2212");
   return text;

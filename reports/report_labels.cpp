@@ -2,9 +2,13 @@
 
 #include "common/join.h"
 #include "reports/html_text.h"
+#include "reports/number_format.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <filesystem>
 #include <vector>
 
@@ -49,6 +53,46 @@ std::string outputHref(const std::string& path, int depth) {
   std::string up;
   for (int i = 0; i < depth; ++i) up += "../";
   return up + urlPath(path);
+}
+
+bool outputPresent(const std::filesystem::path& run_dir, const std::string& path) {
+  if (path.empty()) return false;
+  const std::filesystem::path file(path);
+  std::error_code ec;
+  return std::filesystem::is_regular_file(file.is_absolute() ? file : run_dir / file, ec);
+}
+
+std::string fileUrl(const std::filesystem::path& path) {
+  return "file://" + urlPath(std::filesystem::absolute(path).lexically_normal().generic_string());
+}
+
+std::string pixelSamplingText(const std::string& sampling) {
+  if (sampling == "center") return "pixel centres";
+  if (sampling == "area") return "box-filtered over the pixel";
+  return sampling;  // a value newer than this report: shown as recorded
+}
+
+std::string referenceLabel(const results::ReferenceUse& use) {
+  return fmt::format("{}, {}", use.path_class, pixelSamplingText(use.pixel_sampling));
+}
+
+std::string checkpointComparisonText(const results::JobResult& job) {
+  // The harness measures a reference job's last checkpoint (the points are sorted by spp).
+  if (!job.convergence || job.convergence->x_label != "spp" || job.convergence->points.empty())
+    return {};
+  return fmt::format("the {}-spp checkpoint against the {}-spp reference",
+                     formatNumber(job.convergence->points.back().x), job.reference.spp);
+}
+
+bool isSoftwareRasteriser(std::string_view renderer) {
+  // Mesa's names: "llvmpipe (LLVM 15.0.6, 256 bits)", "softpipe", "Software Rasterizer" (swrast).
+  static constexpr std::array<std::string_view, 4> kSoftware = {"llvmpipe", "softpipe", "swrast",
+                                                                "software rasterizer"};
+  std::string lower(renderer);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return std::any_of(kSoftware.begin(), kSoftware.end(),
+                     [&](std::string_view name) { return lower.find(name) != std::string::npos; });
 }
 
 }  // namespace gib::reports

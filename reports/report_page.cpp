@@ -2,6 +2,7 @@
 
 #include "common/embedded_file.h"
 #include "reports/html_text.h"
+#include "reports/report_labels.h"
 
 #include <fmt/format.h>
 
@@ -38,6 +39,21 @@ std::string htmlPage(std::string_view title, std::string_view body) {
 std::string htmlSection(std::string_view id, std::string_view heading, std::string_view body) {
   return fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n{}\n</section>\n", escapeHtml(id),
                      escapeHtml(heading), body);
+}
+
+std::string rendererNote(std::string_view renderer, std::string_view scope) {
+  if (renderer.empty())
+    return "<p class=\"renderer\">GL renderer: none recorded (no technique job ran).</p>\n";
+  const std::string scoped =
+      scope.empty() ? std::string() : fmt::format(" ({})", escapeHtml(scope));
+  if (!isSoftwareRasteriser(renderer))
+    return fmt::format("<p class=\"renderer\">GL renderer: <strong>{}</strong>{}.</p>\n",
+                       escapeHtml(renderer), scoped);
+  return fmt::format(
+      "<p class=\"renderer software-renderer\" role=\"note\">GL renderer: <strong>{}</strong>{}, "
+      "a software rasteriser running on the CPU: its timings are not representative of a "
+      "GPU's.</p>\n",
+      escapeHtml(renderer), scoped);
 }
 
 HtmlTable::HtmlTable(std::vector<TableColumn> columns, std::string_view css_class)

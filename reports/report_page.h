@@ -20,6 +20,12 @@ std::string htmlPage(std::string_view title, std::string_view body);
 // <section> with an <h2> heading (escaped) and `body` (HTML).
 std::string htmlSection(std::string_view id, std::string_view heading, std::string_view body);
 
+// A line naming the GL renderer (GL_RENDERER) the page's timings come from, with `scope` in
+// brackets when not empty ("the run's technique jobs"); a software rasteriser
+// (isSoftwareRasteriser: llvmpipe, softpipe, swrast) is flagged as not representative of GPU
+// timings. Every page of a run's report carries one.
+std::string rendererNote(std::string_view renderer, std::string_view scope = {});
+
 struct TableColumn {
   std::string heading;   // text (escaped)
   bool numeric = false;  // right-aligned, tabular figures

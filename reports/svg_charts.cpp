@@ -1,6 +1,7 @@
 #include "reports/svg_charts.h"
 
 #include "image/false_color.h"
+#include "metrics/timing_statistics.h"
 #include "reports/chart_axes.h"
 #include "reports/number_format.h"
 #include "reports/svg_writer.h"
@@ -88,13 +89,16 @@ std::string fill(std::string_view color) {
   return fmt::format(R"(fill="{}")", color);
 }
 
-// "slope −0.98 ± 0.03": the slope with as many decimals as its interval's first digit needs.
-std::string slopeLabel(const FittedSlope& fit) {
-  if (!std::isfinite(fit.ci95)) return "slope " + withMinusSign(formatNumber(fit.slope, 3));
+// "relmse: slope −0.98 ± 0.03" (`fitted`: the y quantity): the slope with as many decimals as its
+// interval's first digit needs.
+std::string slopeLabel(std::string_view fitted, const FittedSlope& fit) {
+  const std::string prefix = fitted.empty() ? std::string() : fmt::format("{}: ", fitted);
+  if (!std::isfinite(fit.ci95))
+    return prefix + "slope " + withMinusSign(formatNumber(fit.slope, 3));
   const int decimals = fit.ci95 > 0 ? std::clamp(int(-std::floor(std::log10(fit.ci95))), 2, 6) : 2;
-  return fmt::format("slope {} \u00b1 {:.{}f}",
-                     withMinusSign(fmt::format("{:.{}f}", fit.slope, decimals)), fit.ci95,
-                     decimals);
+  return prefix + fmt::format("slope {} \u00b1 {:.{}f}",
+                              withMinusSign(fmt::format("{:.{}f}", fit.slope, decimals)), fit.ci95,
+                              decimals);
 }
 
 std::string hexColor(const float rgb[3]) {
@@ -104,9 +108,16 @@ std::string hexColor(const float rgb[3]) {
 
 }  // namespace
 
-std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view unit) {
+std::string passTimingChart(const std::vector<PassBar>& passes_ms, std::string_view unit,
+                            const TimeUnit& time) {
   constexpr double kRowHeight = 20, kIndent = 12, kTop = 8, kBarsWidth = 360, kValueWidth = 84;
   constexpr std::array<const char*, 3> kDepthColors = {"#2f5f98", "#5b8bc6", "#93b5de"};
+  // From here on the bars' times are in `time`'s unit.
+  std::vector<PassBar> passes = passes_ms;
+  for (PassBar& pass : passes)
+    for (double* value : {&pass.median_ms, &pass.first_quartile_ms, &pass.third_quartile_ms})
+      *value *= time.per_ms;
+  const std::string symbol = time.symbol;
   std::vector<const PassBar*> drawn;
   double label_width = 80, top_value = 0;
   for (const PassBar& pass : passes) {
@@ -120,10 +131,10 @@ std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view
   const PlotArea area{label_width, kTop, label_width + kBarsWidth,
                       kTop + kRowHeight * double(std::max<std::size_t>(1, drawn.size()))};
   const double height = area.bottom + 40 + (skipped ? 16 : 0);
-  SvgWriter svg(area.right + kValueWidth, height, "Median time per pass in ms");
+  SvgWriter svg(area.right + kValueWidth, height, "Median time per pass in " + symbol);
   const Axis axis = linearAxis(0, top_value > 0 ? top_value : 1);
   drawXAxis(svg, area, axis,
-            fmt::format("ms per {}: median, whiskers from first to third quartile", unit));
+            fmt::format("{} per {}: median, whiskers from first to third quartile", symbol, unit));
   if (drawn.empty()) svg.text(area.left + 8, kTop + 14, "no finite pass times");
   for (std::size_t i = 0; i < drawn.size(); ++i) {
     const PassBar& pass = *drawn[i];
@@ -132,10 +143,11 @@ std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view
     const bool whisker = drawable(pass.first_quartile_ms) && drawable(pass.third_quartile_ms) &&
                          pass.first_quartile_ms >= 0 &&
                          pass.first_quartile_ms <= pass.third_quartile_ms;
-    std::string tooltip = fmt::format("{}: median {} ms", pass.name, formatNumber(pass.median_ms));
+    std::string tooltip =
+        fmt::format("{}: median {} {}", pass.name, formatNumber(pass.median_ms), symbol);
     if (whisker)
-      tooltip += fmt::format(", quartiles {} to {} ms", formatNumber(pass.first_quartile_ms),
-                             formatNumber(pass.third_quartile_ms));
+      tooltip += fmt::format(", quartiles {} to {} {}", formatNumber(pass.first_quartile_ms),
+                             formatNumber(pass.third_quartile_ms), symbol);
     svg.text(8 + kIndent * pass.depth, y + 14, pass.name);
     svg.rect(area.left, y + 4, end - area.left, 12,
              fill(kDepthColors[std::min<std::size_t>(std::size_t(std::max(0, pass.depth)),
@@ -150,9 +162,58 @@ std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view
                    SvgWriter::moveTo(q3, mid - 4) + SvgWriter::verticalTo(mid + 4),
                R"(stroke="#222" stroke-width="1" fill="none")");
     }
-    svg.text(area.right + 6, y + 14, formatNumber(pass.median_ms) + " ms");
+    svg.text(area.right + 6, y + 14, formatNumber(pass.median_ms) + " " + symbol);
   }
   drawSkippedNote(svg, 8, height - 6, skipped, "passes without a finite time");
+  return svg.finish();
+}
+
+std::string stripChart(const StripPlot& plot) {
+  constexpr double kRowHeight = 20, kIndent = 12, kTop = 28, kPlotWidth = 360, kJitter = 4;
+  double label_width = 80, top_value = 0;
+  int skipped = 0;
+  for (const StripRow& row : plot.rows) {
+    label_width = std::max(label_width, 16 + kIndent * row.depth + kCharWidth * row.name.size());
+    for (double value : row.values) {
+      if (drawable(value))
+        top_value = std::max(top_value, value);
+      else
+        ++skipped;
+    }
+  }
+  const PlotArea area{label_width, kTop, label_width + kPlotWidth,
+                      kTop + kRowHeight * double(std::max<std::size_t>(1, plot.rows.size()))};
+  const double height = area.bottom + 40 + (skipped ? 16 : 0);
+  SvgWriter svg(area.right + 16, height, plot.title);
+  drawTitle(svg, area, plot.title);
+  const Axis axis = linearAxis(0, top_value > 0 ? top_value : 1);
+  drawXAxis(svg, area, axis,
+            fmt::format("{} per {}: a dot per {}, the bar at the median", plot.unit, plot.sample,
+                        plot.sample));
+  const std::string dot = fmt::format(R"(fill="{}" fill-opacity="0.55")", kDataColor);
+  for (std::size_t r = 0; r < plot.rows.size(); ++r) {
+    const StripRow& row = plot.rows[r];
+    const double mid = kTop + kRowHeight * (double(r) + 0.5);
+    svg.text(8 + kIndent * row.depth, mid + 4, row.name);
+    std::vector<double> finite;
+    for (std::size_t i = 0; i < row.values.size(); ++i) {
+      const double value = row.values[i];
+      if (!drawable(value)) continue;
+      finite.push_back(value);
+      // A fixed vertical spread by sample index, so that equal times stay apart and a run's
+      // picture does not change between reports.
+      const double jitter = kJitter * (double(i * 7 % 9) / 4.0 - 1.0);
+      svg.circle(axisPixel(axis, value, area.left, area.right), mid + jitter, 2.5, dot,
+                 fmt::format("{} {}, {}: {} {}", plot.sample, i + 1, row.name, formatNumber(value),
+                             plot.unit));
+    }
+    if (finite.empty()) continue;
+    // The table's median (the same interpolating quantile), so the bar and the number agree.
+    const double median = axisPixel(axis, metrics::quantile(finite, 0.5), area.left, area.right);
+    svg.line(median, mid - 8, median, mid + 8,
+             fmt::format(R"(stroke="{}" stroke-width="2")", kHighlightColor));
+  }
+  drawSkippedNote(svg, 8, height - 6, skipped, "samples without a finite time");
   return svg.finish();
 }
 
@@ -200,7 +261,7 @@ std::string logLogChart(const LogLogPlot& plot) {
         px(x), py(y), 3.5, fill(kDataColor),
         fmt::format("{} {}: {} {}", plot.x_label, formatNumber(x), plot.y_label, formatNumber(y)));
   if (line)
-    svg.text(area.right - 6, area.top + 16, slopeLabel(*plot.fit), "end",
+    svg.text(area.right - 6, area.top + 16, slopeLabel(plot.y_label, *plot.fit), "end",
              fmt::format(R"(fill="{}" font-weight="bold")", kHighlightColor));
   if (drawn.empty()) svg.text(area.left + 8, area.top + 16, "no point with positive values");
   drawSkippedNote(svg, 8, kHeight - 6, skipped, "points with zero or non-finite values");

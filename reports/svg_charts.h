@@ -4,6 +4,8 @@
 // carries "nan" and never hides that something was dropped.
 #pragma once
 
+#include "reports/number_format.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,8 +24,26 @@ struct PassBar {
 
 // Horizontal bars of the median time per pass with whiskers from the first to the third
 // quartile, one row per pass in the given (depth-first) order, names indented by depth. `unit`
-// is what one sample times ("frame", "iteration").
-std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view unit = "frame");
+// is what one sample times ("frame", "iteration"); the times are drawn and labelled in `time`
+// (the pass table's unit, µs for a sub-millisecond frame).
+std::string passTimingChart(const std::vector<PassBar>& passes, std::string_view unit = "frame",
+                            const TimeUnit& time = {"ms", 1.0});
+
+// Per-sample times of each pass as a strip plot: one dot per sample (frame, iteration) on a
+// shared time axis, a row per pass with its name indented by depth and its median marked, so
+// that outliers and a bimodal spread show where a median and quartiles hide them.
+struct StripRow {
+  std::string name;
+  int depth = 0;
+  std::vector<double> values;  // in the plot's unit
+};
+struct StripPlot {
+  std::string title;
+  std::string sample;  // what one dot is: "frame", "iteration"
+  std::string unit;    // of the values: "ms", "µs"
+  std::vector<StripRow> rows;
+};
+std::string stripChart(const StripPlot& plot);
 
 struct FittedSlope {
   double slope = 0;
@@ -32,7 +52,8 @@ struct FittedSlope {
 
 // Points on log-log axes, and when `fit` is given, the least-squares line with that slope
 // through the centroid of the drawn points in log space (where every least-squares line passes,
-// so no intercept convention is needed) with a label "slope −0.98 ± 0.03".
+// so no intercept convention is needed) with a label naming what was fitted, the y quantity:
+// "relmse: slope −0.98 ± 0.03".
 struct LogLogPlot {
   std::string title;
   std::string x_label, y_label;

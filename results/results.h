@@ -159,6 +159,10 @@ struct ReferenceUse {
   std::string path_class;  // "LE + LDE", "all paths"
   bool store_hit = false;  // found in the store rather than rendered by this run
   double render_seconds = 0;
+  // Where the reference's camera rays go: "center" (through each pixel's centre, the rasteriser's
+  // sample position: the technique's lighting alone is compared) or "area" (a box filter over the
+  // pixel: anti-aliased, for the reference's own checks). Files before it was recorded: "area".
+  std::string pixel_sampling = "area";
   bool operator==(const ReferenceUse&) const = default;
 };
 
@@ -192,6 +196,13 @@ struct JobOutputs {
   // the reference's mean and standard error (one file per reference, shared by its jobs).
   std::string viewer_data;
   std::string reference_viewer_data;
+  // Full-precision copies of the references the job was measured against (reference.exr, and
+  // full_reference.exr when the class is narrower), so the run directory stands alone.
+  std::string reference_exr;
+  std::string full_reference_exr;
+  // Technique jobs measured against a pixel-centre reference: the pixels whose primary hit the
+  // rasteriser and the ray tracer disagree on (white), with their count.
+  std::string disagreement_png;
   bool operator==(const JobOutputs&) const = default;
 };
 
@@ -236,6 +247,9 @@ struct JobResult {
   double upload_ms = 0, prepare_ms = 0, iterate_ms = 0;
   int iterations = 0;
   NamedValues statistics;  // the technique's counts (vertices, texels, grid points)
+  // Technique jobs against a pixel-centre reference: pixels whose primary hit differs between the
+  // G-buffer and the reference's camera rays (silhouettes, shared edges); -1 when not checked.
+  long long disagreement_pixels = -1;
   JobOutputs outputs;
   std::vector<AuxiliaryImageOutput> auxiliary_images;
   double seconds = 0;    // wall time of the whole job

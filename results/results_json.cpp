@@ -330,14 +330,26 @@ metrics::PassTimings readPassTimings(const JsonField& f) {
   return timings;
 }
 
+// pixel_sampling was added after version 1: absent means the box filter of older references.
+ReferenceUse readReferenceUse(const JsonField& f) {
+  ReferenceUse use = membersFromJson(f, kReferenceMembers);
+  if (auto sampling = f.find("pixel_sampling")) use.pixel_sampling = sampling->asString();
+  return use;
+}
+
+json referenceUseToJson(const ReferenceUse& use) {
+  json out = membersToJson(use, kReferenceMembers);
+  out["pixel_sampling"] = use.pixel_sampling;
+  return out;
+}
+
 JobResult readJob(const JsonField& f) {
   JobResult j = membersFromJson(f, kJobMembers);
   j.parameters = readAssignments(f.at("parameters"));
   j.scene_parameters = readAssignments(f.at("scene_parameters"));
-  j.reference = membersFromJson(f.at("reference"), kReferenceMembers);
+  j.reference = readReferenceUse(f.at("reference"));
   j.metrics = readNamedValues(f.at("metrics"));
-  if (auto full = f.find("full_reference"))
-    j.full_reference = membersFromJson(*full, kReferenceMembers);
+  if (auto full = f.find("full_reference")) j.full_reference = readReferenceUse(*full);
   j.metrics_full = readNamedValues(f.at("metrics_full"));
   if (auto convergence = f.find("convergence")) j.convergence = readConvergence(*convergence);
   if (auto timings = f.find("timings")) j.timings = readPassTimings(*timings);
@@ -365,6 +377,11 @@ JobResult readJob(const JsonField& f) {
   if (auto data = outputs.find("viewer_data")) j.outputs.viewer_data = data->asString();
   if (auto data = outputs.find("reference_viewer_data"))
     j.outputs.reference_viewer_data = data->asString();
+  if (auto exr = outputs.find("reference_exr")) j.outputs.reference_exr = exr->asString();
+  if (auto exr = outputs.find("full_reference_exr")) j.outputs.full_reference_exr = exr->asString();
+  if (auto png = outputs.find("disagreement_png")) j.outputs.disagreement_png = png->asString();
+  if (auto pixels = f.find("disagreement_pixels"))
+    j.disagreement_pixels = static_cast<long long>(pixels->asNumber());
   return j;
 }
 
@@ -451,10 +468,9 @@ json jobToJson(const JobResult& j) {
   json out = membersToJson(j, kJobMembers);
   out["parameters"] = assignmentsToJson(j.parameters);
   out["scene_parameters"] = assignmentsToJson(j.scene_parameters);
-  out["reference"] = membersToJson(j.reference, kReferenceMembers);
+  out["reference"] = referenceUseToJson(j.reference);
   out["metrics"] = namedValuesToJson(j.metrics);
-  out["full_reference"] =
-      j.full_reference ? membersToJson(*j.full_reference, kReferenceMembers) : json();
+  out["full_reference"] = j.full_reference ? referenceUseToJson(*j.full_reference) : json();
   out["metrics_full"] = namedValuesToJson(j.metrics_full);
   out["convergence"] = j.convergence ? convergenceToJson(*j.convergence) : json();
   out["timings"] = j.timings ? passTimingsToJson(*j.timings) : json();
@@ -476,6 +492,10 @@ json jobToJson(const JobResult& j) {
   out["outputs"]["thumbnail_png"] = j.outputs.thumbnail_png;
   out["outputs"]["viewer_data"] = j.outputs.viewer_data;
   out["outputs"]["reference_viewer_data"] = j.outputs.reference_viewer_data;
+  out["outputs"]["reference_exr"] = j.outputs.reference_exr;
+  out["outputs"]["full_reference_exr"] = j.outputs.full_reference_exr;
+  out["outputs"]["disagreement_png"] = j.outputs.disagreement_png;
+  out["disagreement_pixels"] = j.disagreement_pixels;
   return out;
 }
 

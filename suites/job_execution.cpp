@@ -14,6 +14,7 @@
 #include "metrics/pass_timing_summary.h"
 #include "realtime/technique_output.h"
 #include "realtime/technique_runner.h"
+#include "reference/primary_agreement.h"
 #include "reference/progressive_renderer.h"
 #include "reference/reference_output.h"
 #include "results/results_json.h"
@@ -50,6 +51,15 @@ scene::PathClass referenceClass(const PreparedJob& p) {
   return c;
 }
 
+// Where the reference's camera rays go: the suite's choice, else pixel centres for a technique
+// (the rasteriser's sample position: its error is then its lighting's) and the box filter for
+// the reference's own job (docs/rendering.md, "Pixel sampling").
+ref::PixelSampling pixelSampling(const PreparedJob& p) {
+  if (const std::optional<std::string>& chosen = p.job->settings.reference.pixel_sampling)
+    return ref::parsePixelSampling(*chosen);
+  return p.job->isReference() ? ref::PixelSampling::kArea : ref::PixelSampling::kCenter;
+}
+
 ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& path_class) {
   ref::ReferenceSpec spec;
   spec.scene = p.job->scene.nameOrPath();
@@ -59,6 +69,7 @@ ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& p
   spec.spp = static_cast<std::uint32_t>(p.job->settings.reference.spp);
   spec.seed = p.job->settings.reference.seed;
   spec.path_class = path_class;
+  spec.pixel_sampling = pixelSampling(p);
   return spec;
 }
 
@@ -69,6 +80,7 @@ results::ReferenceUse referenceUse(const ref::StoredReference& stored, double se
   use.seed = stored.entry.spec.seed;
   use.path_class = scene::describePathClass(stored.entry.spec.path_class);
   use.store_hit = stored.hit;
+  use.pixel_sampling = ref::pixelSamplingName(stored.entry.spec.pixel_sampling);
   use.render_seconds = stored.hit ? 0.0 : seconds;
   return use;
 }
@@ -78,9 +90,10 @@ ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment&
                                      const scene::PathClass& path_class,
                                      results::ReferenceUse* use) {
   const ref::ReferenceSpec spec = referenceSpec(p, path_class);
-  const std::string what =
-      fmt::format("reference {} ({}x{}, {} spp)", scene::describePathClass(path_class), spec.width,
-                  spec.height, spec.spp);
+  const std::string what = fmt::format(
+      "reference {} ({}x{}, {} spp, {})", scene::describePathClass(path_class), spec.width,
+      spec.height, spec.spp,
+      spec.pixel_sampling == ref::PixelSampling::kCenter ? "pixel centres" : "box filter");
   const Clock::time_point start = Clock::now();
   ref::StoredReference stored =
       env.store->obtain(p.scene, spec, env.progress, [&](const std::string& holder) {
@@ -96,18 +109,22 @@ ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment&
   return stored;
 }
 
+// `disagreement`: the pixels whose primary hit the technique and the reference disagree on, or
+// null (metrics::MetricOptions::disagreement).
 metrics::MetricReport measure(const image::Image& reference, const image::Image& test,
-                              const std::vector<std::string>& names) {
-  return metrics::evaluateMetrics(reference, test, names);
+                              const std::vector<std::string>& names,
+                              const image::Image* disagreement = nullptr) {
+  metrics::MetricOptions options;
+  options.disagreement = disagreement;
+  return metrics::evaluateMetrics(reference, test, names, options);
 }
 
-// The metric the convergence fit follows: MSE when measured (for an unbiased renderer its
-// expectation falls exactly as 1/spp, where relMSE's per-pixel ratios are heavy-tailed at low spp),
-// else relMSE, else the first value.
+// The metric the convergence fit follows: the one the index shows (relMSE when measured, else
+// the first value, as results::RunResults::primary_metric), so that the slope describes the
+// number a reader compares.
 std::string fitMetric(const results::NamedValues& values) {
-  for (const char* preferred : {"mse", "relmse"})
-    for (const auto& [name, value] : values)
-      if (name == preferred) return name;
+  for (const auto& [name, value] : values)
+    if (name == "relmse") return name;
   return values.empty() ? std::string() : values.front().first;
 }
 
@@ -152,6 +169,18 @@ std::string writeReferenceViewerData(const fs::path& run_dir,
   return relative;
 }
 
+// A full-precision copy of the stored reference's EXR (mean, variance, direct and indirect
+// layers) in the run directory, once per reference and run, so the run stands alone.
+std::string copyReferenceExr(const fs::path& run_dir, const ref::StoredReference& reference) {
+  const fs::path path = run_dir / "references" / (reference.entry.key + ".exr");
+  const std::string relative = relativePath(run_dir, path);
+  std::error_code ec;
+  if (fs::is_regular_file(path, ec)) return relative;  // copied by another job of the run
+  fs::create_directories(path.parent_path(), ec);
+  image::copyFileAtomically(reference.entry.dir / "reference.exr", path);
+  return relative;
+}
+
 // reference.png (a copy of the store's, so the run directory stands alone), difference.png and
 // flip.png of `test` against `reference`; the thumbnail and the viewer's linear data.
 void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
@@ -160,6 +189,7 @@ void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
   const fs::path reference_png = job_dir / "reference.png";
   image::writePng(reference_png, reference.mean);
   outputs.reference_png = relativePath(run_dir, reference_png);
+  outputs.reference_exr = copyReferenceExr(run_dir, reference);
   // A picture that is small enough already is its own thumbnail: no second copy of it.
   const image::Image& pictured = test.width() > 0 ? test : reference.mean;
   const std::string& small_enough = test.width() > 0 ? outputs.image_png : outputs.reference_png;
@@ -191,12 +221,14 @@ void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
 }
 
 void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env,
-                                 const image::Image& test, results::JobResult& result) {
+                                 const image::Image& test, const image::Image* disagreement,
+                                 results::JobResult& result) {
   if (referenceClass(p) == scene::PathClass{}) return;  // the class reference is the full one
   results::ReferenceUse use;
   const ref::StoredReference full = obtainReference(p, env, scene::PathClass{}, &use);
   result.full_reference = use;
-  result.metrics_full = measure(full.mean, test, p.job->settings.metrics).values;
+  result.outputs.full_reference_exr = copyReferenceExr(env.run_dir, full);
+  result.metrics_full = measure(full.mean, test, p.job->settings.metrics, disagreement).values;
 }
 
 // The reference alone: the stored reference, and when the case lists checkpoints an independent
@@ -216,6 +248,7 @@ void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const fs::
     // that shares its samples would look better than it is.
     settings.seed = independentSeed(p.job->settings.reference.seed);
     settings.path_class = referenceClass(p);
+    settings.pixel_sampling = pixelSampling(p);
     settings.progress = env.progress;
     results::Convergence convergence;
     convergence.x_label = "spp";
@@ -272,6 +305,7 @@ rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnviro
   settings.capture_after = p.job->settings.checkpoints;
   settings.context = env.gl;
   settings.services.ray_caster = ref::embreeRayCasterFactory();
+  settings.capture_primary_surfaces = pixelSampling(p) == ref::PixelSampling::kCenter;
   return settings;
 }
 
@@ -279,15 +313,36 @@ rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnviro
 // the run captured on its way.
 results::Convergence techniqueConvergence(const PreparedJob& p,
                                           const std::vector<rt::IterationCapture>& captures,
-                                          const image::Image& reference) {
+                                          const image::Image& reference,
+                                          const image::Image* disagreement) {
   results::Convergence convergence;
   convergence.x_label = "iterations";
   for (const rt::IterationCapture& capture : captures)
-    convergence.points.push_back({double(capture.iterations),
-                                  measure(reference, capture.image, p.job->settings.metrics).values,
-                                  capture.iterate_ms * 1e-3});
+    convergence.points.push_back(
+        {double(capture.iterations),
+         measure(reference, capture.image, p.job->settings.metrics, disagreement).values,
+         capture.iterate_ms * 1e-3});
   fitConvergence(convergence);
   return convergence;
+}
+
+// Pixels whose primary hit the rasteriser and the pixel-centre reference disagree on: counted
+// and written as a mask (white), not hidden (reference/primary_agreement.h).
+// Returns the mask (one channel, 1 where they disagree).
+image::Image recordPrimaryAgreement(const PreparedJob& p, const JobEnvironment& env,
+                                    const fs::path& job_dir, const rt::PrimarySurfaces& primary,
+                                    results::JobResult& result) {
+  const ref::PrimaryAgreement agreement =
+      ref::comparePrimarySurfaces(p.scene, primary.position, primary.normal);
+  result.disagreement_pixels = static_cast<long long>(agreement.disagreements);
+  image::Image mask(agreement.mask.width(), agreement.mask.height());
+  for (int y = 0; y < mask.height(); ++y)
+    for (int x = 0; x < mask.width(); ++x)
+      for (int c = 0; c < 3; ++c) mask.pixel(x, y)[c] = agreement.mask.pixel(x, y)[0];
+  const fs::path png = job_dir / "disagreement.png";
+  image::writePng(png, mask);
+  result.outputs.disagreement_png = relativePath(env.run_dir, png);
+  return agreement.mask;
 }
 
 void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::path& job_dir,
@@ -325,12 +380,16 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::
 
   const ref::StoredReference reference =
       obtainReference(p, env, referenceClass(p), &result.reference);
-  const metrics::MetricReport report = measure(reference.mean, run.image, p.job->settings.metrics);
+  std::optional<image::Image> disagreement;
+  if (run.primary) disagreement = recordPrimaryAgreement(p, env, job_dir, *run.primary, result);
+  const image::Image* mask = disagreement ? &*disagreement : nullptr;
+  const metrics::MetricReport report =
+      measure(reference.mean, run.image, p.job->settings.metrics, mask);
   result.metrics = report.values;
   writeComparisonImages(env.run_dir, job_dir, reference, run.image, report, result.outputs);
-  measureAgainstFullReference(p, env, run.image, result);
+  measureAgainstFullReference(p, env, run.image, mask, result);
   if (!p.job->settings.checkpoints.empty())
-    result.convergence = techniqueConvergence(p, run.captures, reference.mean);
+    result.convergence = techniqueConvergence(p, run.captures, reference.mean, mask);
 }
 
 std::string jobHash(const PreparedJob& p) {
@@ -350,6 +409,7 @@ std::string jobHash(const PreparedJob& p) {
                     s.reference.min_bounces.value_or(-1), s.reference.max_bounces.value_or(-1)})
     hasher.addU64(std::uint64_t(std::int64_t(value)));
   hasher.addU64(s.reference.seed);
+  hasher.addString(ref::pixelSamplingName(pixelSampling(p)));
   for (const std::string& metric : s.metrics) hasher.addString(metric);
   for (int checkpoint : s.checkpoints) hasher.addU64(std::uint64_t(checkpoint));
   if (s.iterations) hasher.addString(fmt::format("iterations={}", *s.iterations));

@@ -26,6 +26,10 @@ struct ReferenceSettings {
   // every path for a reference case. max_bounces may be PathClass::kUnlimited.
   std::optional<int> min_bounces;
   std::optional<int> max_bounces;
+  // Where the reference's camera rays go ("center" or "area", ref::parsePixelSampling). Absent:
+  // pixel centres for a technique case (its error is its lighting's, not anti-aliasing's), the
+  // box filter for a reference case (the reference's own convergence, as other renderers do it).
+  std::optional<std::string> pixel_sampling;
 
   bool operator==(const ReferenceSettings&) const = default;
 };

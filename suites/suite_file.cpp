@@ -43,7 +43,8 @@ constexpr long long kMaxRepeats = 100;
 
 const std::vector<std::string> kSettingKeys = {"width",  "height",  "metrics",  "frames",
                                                "warmup", "repeats", "reference"};
-const std::vector<std::string> kReferenceKeys = {"spp", "seed", "min_bounces", "max_bounces"};
+const std::vector<std::string> kReferenceKeys = {"spp", "seed", "min_bounces", "max_bounces",
+                                                 "pixel_sampling"};
 
 bool isSafeName(std::string_view name) {
   return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
@@ -105,8 +106,8 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
   const std::string name = parent.path("reference");
   const TomlTableReader t(parent.errors(),
                           requireTomlTable(parent.errors(), node, name,
-                                           fmt::format("write [{}] with spp, seed, min_bounces "
-                                                       "or max_bounces",
+                                           fmt::format("write [{}] with spp, seed, min_bounces, "
+                                                       "max_bounces or pixel_sampling",
                                                        name)),
                           name, fmt::format("[{}]", name), kReferenceKeys);
   if (const toml::node* n = t.find("spp"))
@@ -132,6 +133,15 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
       s.run.reference.max_bounces = static_cast<int>(n->as_integer()->get());
     }
     s.max_bounces_node = n;
+  }
+  if (const toml::node* n = t.find("pixel_sampling")) {
+    const std::string sampling = t.string(*n, "pixel_sampling");
+    if (sampling != "center" && sampling != "area")
+      t.errors().fail(
+          *n, fmt::format("{} is '{}', not a pixel sampling", t.path("pixel_sampling"), sampling),
+          "write pixel_sampling = \"center\" (camera rays through pixel centres, as "
+          "the rasteriser samples) or \"area\" (a box filter over each pixel)");
+    s.run.reference.pixel_sampling = sampling;
   }
 }
 

@@ -2,6 +2,7 @@
 // rtcIntersect1 throughput on a comparable ray set in the same run: their ratio is the cost of
 // shading, sampling and bookkeeping (the target: the tracer keeps ≥ 60%).
 #include "reference/embree_scene.h"
+#include "reference/primary_agreement.h"
 #include "reference/progressive_renderer.h"
 #include "reference/rng.h"
 #include "reference/sampling.h"
@@ -12,6 +13,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 
 #include <atomic>
 #include <vector>
@@ -54,6 +56,54 @@ void bothSamplers(benchmark::internal::Benchmark* b, int spp) {
 BENCHMARK_CAPTURE(BM_Reference512, cornell, "cornell")->Apply([](auto* b) { bothSamplers(b, 64); });
 BENCHMARK_CAPTURE(BM_Reference512, chamber, "chamber")->Apply([](auto* b) { bothSamplers(b, 1); });
 BENCHMARK_CAPTURE(BM_Reference512, cloud, "cloud")->Apply([](auto* b) { bothSamplers(b, 1); });
+
+// The box-filtered reference beside the pixel-centre one (docs/rendering.md, "Pixel sampling"):
+// a pixel-centre render traces each pixel's camera ray once and shares its hit, so its samples
+// cost the lighting alone.
+void BM_ReferencePixelSampling512(benchmark::State& state) {
+  const scene::Scene scene = scene::loadScene("cornell");
+  ref::RenderSettings settings;
+  settings.width = settings.height = kSize;
+  settings.spp = 64;
+  settings.pixel_sampling = ref::PixelSampling(state.range(0));
+  state.SetLabel(ref::pixelSamplingName(settings.pixel_sampling));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(ref::renderReference(scene, settings).mean.data().data());
+  state.counters["samples/s"] = benchmark::Counter(
+      double(state.iterations()) * kSize * kSize * settings.spp, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ReferencePixelSampling512)
+    ->Arg(int(ref::PixelSampling::kArea))
+    ->Arg(int(ref::PixelSampling::kCenter))
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// What a technique job adds after its frames: Embree's ray through every pixel centre compared
+// with the rasteriser's surfaces (here a G-buffer made by the same rays, so every pixel agrees).
+void BM_ComparePrimarySurfaces512(benchmark::State& state) {
+  const scene::Scene scene = scene::loadScene("chamber");
+  const ref::EmbreeScene embree(scene);
+  const scene::CameraFrame camera = scene::makeCameraFrame(scene.camera, kSize, kSize);
+  image::Image position(kSize, kSize, 4), normal(kSize, kSize, 4);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const glm::vec3 d = scene::cameraRayDirection(camera, kSize, kSize, x + 0.5f, y + 0.5f);
+      const ref::Hit hit = embree.intersect(camera.origin, d);
+      float* p = position.pixel(x, y);
+      float* n = normal.pixel(x, y);
+      p[3] = hit.valid() ? hit.t : -1.0f;
+      if (!hit.valid()) continue;
+      const scene::Mesh& mesh = scene.meshes[hit.mesh];
+      const glm::uvec3 t = mesh.triangles[hit.triangle];
+      const glm::vec3 g = glm::normalize(glm::cross(mesh.positions[t.y] - mesh.positions[t.x],
+                                                    mesh.positions[t.z] - mesh.positions[t.x]));
+      n[0] = g.x, n[1] = g.y, n[2] = g.z, n[3] = float(mesh.material);
+    }
+  for (auto _ : state)
+    benchmark::DoNotOptimize(ref::comparePrimarySurfaces(scene, position, normal).disagreements);
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * kSize * kSize);
+}
+BENCHMARK(BM_ComparePrimarySurfaces512)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 struct Ray {
   glm::vec3 origin, direction;

@@ -69,13 +69,17 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
   EXPECT_EQ(reference.id, "cornell-reference");
   ASSERT_TRUE(reference.convergence.has_value());
   ASSERT_EQ(reference.convergence->points.size(), 3u);
-  EXPECT_EQ(reference.convergence->fit_metric, "mse");
-  // The expected MSE of an independent render falls as 1/spp (a slope of −1 on log-log axes)
+  // The fit follows the index's metric (relMSE).
+  EXPECT_EQ(reference.convergence->fit_metric, "relmse");
+  // The expected relMSE of an independent render falls as 1/spp (a slope of −1 on log-log axes)
   // while the reference's own variance is negligible; three points of a 1024-pixel image scatter
   // about that, hence the wide bounds.
   EXPECT_LT(reference.convergence->fit_slope, -0.6);
   EXPECT_GT(reference.convergence->fit_slope, -1.5);
   EXPECT_FALSE(reference.reference.store_hit);
+  // The reference's own job keeps the box filter; its page links the reference it measured.
+  EXPECT_EQ(reference.reference.pixel_sampling, "area");
+  EXPECT_TRUE(fs::is_regular_file(out / reference.outputs.reference_exr));
 
   for (const std::size_t i : {1u, 2u}) {
     const results::JobResult& direct = results.jobs[i];
@@ -83,9 +87,18 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
     EXPECT_EQ(direct.path_class, "LE + LDE");
     EXPECT_EQ(direct.reference.path_class, "LE + LDE");
     ASSERT_TRUE(direct.full_reference.has_value());
-    // The full reference is the reference job's: rendered once, then found in the store.
-    EXPECT_EQ(direct.full_reference->key, results.jobs[0].reference.key);
-    EXPECT_TRUE(direct.full_reference->store_hit);
+    // Technique jobs are measured against pixel-centre references, the class's and the full
+    // one, keyed apart from the reference job's box-filtered one: the full one is rendered by
+    // the first technique job and found in the store by the second.
+    EXPECT_EQ(direct.reference.pixel_sampling, "center");
+    EXPECT_EQ(direct.full_reference->pixel_sampling, "center");
+    EXPECT_NE(direct.full_reference->key, results.jobs[0].reference.key);
+    EXPECT_EQ(direct.full_reference->store_hit, i == 2);
+    // The pixels whose primary hit rasteriser and ray tracer disagree on: counted (the Cornell
+    // box's silhouettes at 32² are a few pixels, under 3 %), and shown.
+    EXPECT_GE(direct.disagreement_pixels, 0);
+    EXPECT_LT(direct.disagreement_pixels, 32 * 32 * 3 / 100);
+    EXPECT_TRUE(fs::is_regular_file(out / direct.outputs.disagreement_png));
     ASSERT_TRUE(direct.metric("relmse").has_value());
     EXPECT_TRUE(direct.frameMedianMs().has_value());
     // Direct light leaves out indirect light: farther from the full reference than its own.
@@ -100,7 +113,8 @@ TEST_F(RunCommandTest, WritesResultsCsvHistoryAndReport) {
     EXPECT_NE(direct.reference.key, reference.reference.key);
     for (const std::string& file :
          {direct.outputs.image, direct.outputs.image_png, direct.outputs.reference_png,
-          direct.outputs.difference_png, direct.outputs.flip_png, direct.outputs.timings_json})
+          direct.outputs.difference_png, direct.outputs.flip_png, direct.outputs.timings_json,
+          direct.outputs.reference_exr, direct.outputs.full_reference_exr})
       EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
   }
   EXPECT_EQ(results.jobs[1].id, "cornell-direct/shadow=hard");

@@ -24,6 +24,16 @@ class HtmlReportBrowser : public ::testing::Test {
  protected:
   void SetUp() override {
     results_ = test::syntheticReportResults();
+    // The parts that say what a page compares: a pixel-centre reference, a disagreement mask,
+    // GPU timer-query times beside the CPU clock (so the GPU column and the strip plot are drawn).
+    results::JobResult& pcf = results_.jobs[1];
+    pcf.reference.pixel_sampling = "center";
+    pcf.disagreement_pixels = 12;
+    pcf.outputs.disagreement_png = pcf.outputs.difference_png;
+    for (metrics::PassTiming& pass : pcf.timings->passes) {
+      pass.gpu_ms = pass.cpu_ms;
+      pass.gpu_median_ms = pass.reported.median;
+    }
     test::writeSyntheticOutputs(run_dir_, results_);
     ReportContext context;
     context.previous = test::syntheticReportResults("20261121-100405-smoke-00000000", "fedcba98");
@@ -54,6 +64,21 @@ TEST_F(HtmlReportBrowser, EveryPageLoadsWithoutConsoleErrorsAndPassesItsSelfChec
     EXPECT_EQ(test::reportCheck(loaded.dom), "ok") << describe(loaded);
     EXPECT_EQ(test::consoleProblems(loaded.log), std::vector<std::string>{}) << describe(loaded);
   }
+}
+
+TEST_F(HtmlReportBrowser, WhatAJobPageComparesSurvivesItsScripts) {
+  GIB_REQUIRE_CHROMIUM(chromium);
+  const results::JobResult& job = results_.jobs[1];
+  const test::LoadedPage loaded =
+      test::loadPage(*chromium, run_dir_ / "report" / (job.slug + ".html"), dir_.path());
+  ASSERT_EQ(loaded.exit_code, 0) << describe(loaded);
+  EXPECT_EQ(test::reportCheck(loaded.dom), "ok") << describe(loaded);
+  // Tooltips and legend, the renderer's flag, the mask and the strip plot's dots, as drawn.
+  EXPECT_NE(loaded.dom.find("<span class=\"metric-name\" title=\"relative MSE"), std::string::npos);
+  EXPECT_NE(loaded.dom.find("<table class=\"metric-legend\">"), std::string::npos);
+  EXPECT_NE(loaded.dom.find("class=\"renderer software-renderer\""), std::string::npos);
+  EXPECT_NE(loaded.dom.find("<img class=\"disagreement\""), std::string::npos);
+  EXPECT_NE(loaded.dom.find("<title>frame 8, shading: 11 ms</title>"), std::string::npos);
 }
 
 TEST_F(HtmlReportBrowser, APageWithAMissingPictureFailsItsSelfCheck) {

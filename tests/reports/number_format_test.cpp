@@ -37,5 +37,16 @@ TEST(NumberFormat, ChangesSharesAndMinusSigns) {
   EXPECT_EQ(withMinusSign("0.98"), "0.98");
 }
 
+TEST(NumberFormat, DurationsInMillisecondsOrMicrosecondsWhicheverReadsBetter) {
+  EXPECT_EQ(formatMilliseconds(436), "436 ms");
+  EXPECT_EQ(formatMilliseconds(1.0), "1 ms");
+  EXPECT_EQ(formatMilliseconds(0.052), "52 \u00b5s");
+  EXPECT_EQ(formatMilliseconds(0), "0 ms");
+  EXPECT_EQ(formatMilliseconds(std::numeric_limits<double>::quiet_NaN()), "NaN");
+  EXPECT_STREQ(timeUnitFor(0.99).symbol, "\u00b5s");
+  EXPECT_EQ(timeUnitFor(0.99).per_ms, 1000.0);
+  EXPECT_STREQ(timeUnitFor(20).symbol, "ms");
+}
+
 }  // namespace
 }  // namespace gib::reports

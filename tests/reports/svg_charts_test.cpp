@@ -128,7 +128,47 @@ TEST(SvgCharts, SlopeWithoutAnIntervalIsShownWithoutOne) {
   plot.fit->ci95 = kInf;  // two points
   const std::string svg = logLogChart(plot);
   expectWellFormedChart(svg);
-  EXPECT_NE(svg.find(">slope \u22120.98<"), std::string::npos) << svg;
+  // The label names what was fitted: the plot's y quantity.
+  EXPECT_NE(svg.find(">relmse: slope \u22120.98<"), std::string::npos) << svg;
+}
+
+// The x coordinate of the element that starts at `at` ("cx" of a circle, "x1" of a line).
+double coordinateAfter(const std::string& svg, std::size_t at, const std::string& name) {
+  const std::size_t start = svg.find(name + "=\"", at);
+  return std::stod(svg.substr(start + name.size() + 2));
+}
+
+TEST(SvgCharts, StripChartHasADotPerSampleAndAMedianBarPerRow) {
+  const StripPlot plot{"Each frame's time per pass",
+                       "frame",
+                       "ms",
+                       {{"frame", 0, {20, 21, 19, 20, 95}}, {"shading", 1, {10, 12, 11}}}};
+  const std::string svg = stripChart(plot);
+  expectWellFormedChart(svg);
+  EXPECT_EQ(countOccurrences(svg, "<circle "), 8);
+  // The outlier has a dot of its own, named by frame, pass and unit, furthest right.
+  const std::size_t outlier = svg.find("<title>frame 5, frame: 95 ms</title>");
+  ASSERT_NE(outlier, std::string::npos) << svg;
+  const std::size_t typical = svg.find("<title>frame 1, frame: 20 ms</title>");
+  ASSERT_NE(typical, std::string::npos) << svg;
+  const double outlier_x = coordinateAfter(svg, svg.rfind("<circle ", outlier), "cx");
+  const double typical_x = coordinateAfter(svg, svg.rfind("<circle ", typical), "cx");
+  EXPECT_GT(outlier_x, typical_x + 100);
+  // A median bar per row, the first at 20 ms (not pulled right by the outlier, as a mean is).
+  const std::string bar = R"(stroke="#c0392b" stroke-width="2")";
+  EXPECT_EQ(countOccurrences(svg, bar), 2);
+  const std::size_t first_bar = svg.rfind("<line ", svg.find(bar));
+  EXPECT_NEAR(coordinateAfter(svg, first_bar, "x1"), typical_x, 0.05);
+  EXPECT_NE(svg.find("ms per frame"), std::string::npos);
+}
+
+TEST(SvgCharts, StripChartSkipsNonFiniteSamplesWithANote) {
+  const std::string svg = stripChart(
+      {"Each iteration's time", "iteration", "\u00b5s", {{"iteration", 0, {kNaN, 5, kInf}}}});
+  expectWellFormedChart(svg);
+  EXPECT_EQ(countOccurrences(svg, "<circle "), 1);
+  EXPECT_NE(svg.find("samples without a finite time not shown: 2"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<title>iteration 2, iteration: 5 \u00b5s</title>"), std::string::npos);
 }
 
 TEST(SvgCharts, TrendChartHasOnePointPerRunWithCommitLabelsAndTheRunHighlighted) {

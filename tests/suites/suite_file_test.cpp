@@ -810,6 +810,31 @@ std::filesystem::path repositorySuite(const char* name) {
   return std::filesystem::path(GIB_SOURCE_DIR) / "suites" / name;
 }
 
+// The pixel-sampling suite compares each technique case against both references: every case
+// "<name>-area" asks for the box filter and has a twin "<name>" (the default, pixel centres)
+// with the same scene, technique and parameters, so the two columns of its table differ in the
+// reference alone.
+TEST(RepositorySuites, PixelSamplingSuitePairsEachCaseWithItsBoxFilteredTwin) {
+  const Suite suite = loadSuiteFile(repositorySuite("pixel-sampling.toml"));
+  std::size_t twins = 0;
+  for (const Case& c : suite.cases) {
+    const bool area = c.name.ends_with("-area");
+    EXPECT_EQ(c.settings.reference.pixel_sampling,
+              area ? std::optional<std::string>("area") : std::nullopt)
+        << c.name;
+    if (!area) continue;
+    const std::string twin_name = c.name.substr(0, c.name.size() - 5);
+    for (const Case& twin : suite.cases)
+      if (twin.name == twin_name) {
+        ++twins;
+        EXPECT_EQ(twin.scene.name, c.scene.name) << c.name;
+        EXPECT_EQ(twin.technique, c.technique) << c.name;
+        EXPECT_EQ(twin.technique_parameters.size(), c.technique_parameters.size()) << c.name;
+      }
+  }
+  EXPECT_EQ(2 * twins, suite.cases.size());
+}
+
 TEST(RepositorySuites, SmokeSuiteParses) {
   const Suite suite = loadSuiteFile(repositorySuite("smoke.toml"));
   EXPECT_EQ(suite.name, "smoke");

@@ -32,7 +32,7 @@ std::optional<fs::path> findChromium() {
 }
 
 LoadedPage loadPage(const fs::path& chromium, const fs::path& page, const fs::path& work_dir,
-                    PageClock clock) {
+                    PageClock clock, WindowSize window) {
   const fs::path profile = work_dir / "chromium-profile";
   fs::create_directories(profile);
   // --virtual-time-budget lets the load event and its scripts run before the DOM is dumped;
@@ -53,6 +53,9 @@ LoadedPage loadPage(const fs::path& chromium, const fs::path& page, const fs::pa
                                    "file://" + reports::urlPath(fs::absolute(page).string())};
   if (clock == PageClock::kReal)
     argv.erase(std::find(argv.begin(), argv.end(), "--virtual-time-budget=5000"));
+  if (window.width > 0 && window.height > 0)
+    argv.insert(argv.begin() + 3, "--window-size=" + std::to_string(window.width) + "," +
+                                      std::to_string(window.height));
   const CommandResult run = runProgram(argv, work_dir, {"HOME=" + profile.string()});
   return {run.exit_code, run.out, run.err};
 }

@@ -27,10 +27,18 @@ struct LoadedPage {
 // measuring how long a page takes to load).
 enum class PageClock { kVirtual, kReal };
 
+// A browser window's size in pixels (headless Chromium's window includes about 140 pixels of
+// chrome above the page); 0 × 0: headless Chromium's default, whose page is 780 × 437 pixels.
+struct WindowSize {
+  int width = 0;
+  int height = 0;
+};
+
 // Opens `page` (an absolute path) with a fresh profile under `work_dir`; the browser is killed
 // after a minute of real time.
 LoadedPage loadPage(const std::filesystem::path& chromium, const std::filesystem::path& page,
-                    const std::filesystem::path& work_dir, PageClock clock = PageClock::kVirtual);
+                    const std::filesystem::path& work_dir, PageClock clock = PageClock::kVirtual,
+                    WindowSize window = {});
 
 // The value of an attribute of the <html> element of a dumped DOM, entities decoded ("" when
 // absent).

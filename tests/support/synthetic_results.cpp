@@ -80,10 +80,20 @@ results::RunResults richResults() {
   technique.prepare_ms = 11.0;
   technique.iterate_ms = 2.25;
   technique.iterations = 4;
-  technique.outputs = {
-      "jobs/a.exr",       "jobs/a.png",          "jobs/ref.png",           "jobs/diff.png",
-      "jobs/flip.png",    "jobs/a-timings.json", "slurm/1/logs/gpu-0.log", "jobs/a-thumbnail.png",
-      "jobs/a-viewer.js", "viewer/ref.js"};
+  technique.outputs = {"jobs/a.exr",
+                       "jobs/a.png",
+                       "jobs/ref.png",
+                       "jobs/diff.png",
+                       "jobs/flip.png",
+                       "jobs/a-timings.json",
+                       "slurm/1/logs/gpu-0.log",
+                       "jobs/a-thumbnail.png",
+                       "jobs/a-viewer.js",
+                       "viewer/ref.js",
+                       "references/ref.exr",
+                       "references/full.exr",
+                       "jobs/a-disagreement.png"};
+  technique.disagreement_pixels = 17;
   technique.execution = {"node7", "1234_5", 12.5, "llvmpipe (LLVM 15.0.6, 256 bits)"};
   technique.iteration_timings = frameTimings({1.5, 2.0, 2.5, 3.0}, "cpu", "iteration");
   technique.statistics = {{"vertices", 1536}, {"atlas_texels", 12000}};

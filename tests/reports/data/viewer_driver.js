@@ -53,15 +53,19 @@
     exposure.dispatchEvent(new Event('input', { bubbles: true }));
     record('exposure +1');
 
-    out.samples = [[100, 200], [450, 200], [300, 40]].map(function (p) { return { at: p, rgb: pixel(p[0], p[1]) }; });
+    // Canvas pixels (their top left corners) at fractions of the pane, whose size depends on the
+    // window.
+    function at(fx, fy) { return [Math.floor(fx * pane.width), Math.floor(fy * pane.height)]; }
+    out.samples = [at(0.2, 0.52), at(0.88, 0.52), at(0.59, 0.1)].map(function (p) { return { at: p, rgb: pixel(p[0], p[1]) }; });
 
-    pointer('pointermove', 300, 200);
+    out.hover = at(0.59, 0.52);
+    pointer('pointermove', out.hover[0], out.hover[1]);
     out.readout = root.querySelector('[data-role="readout"]').textContent;
 
     var falseColour = root.querySelector('[data-role="false-colour"]');
     falseColour.click();
     record('false colour');
-    out.false_samples = [[100, 200]].map(function (p) { return { at: p, rgb: pixel(p[0], p[1]) }; });
+    out.false_samples = [at(0.2, 0.52)].map(function (p) { return { at: p, rgb: pixel(p[0], p[1]) }; });
     out.hash = location.hash;
   } catch (e) {
     out.error = String(e && e.stack || e);
