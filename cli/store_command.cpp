@@ -119,16 +119,19 @@ int runList(const StoreOptions& o) {
     scene_width = std::max(scene_width, sceneLabel(e).size());
     class_width = std::max(class_width, scene::describePathClass(e.spec.path_class).size());
   }
-  fmt::print("{:<12}  {:<{}}  {:>9}  {:>6}  {:>6}  {:<{}}  {:>8}  {}\n", "key", "scene",
-             scene_width, "size", "spp", "seed", "path class", class_width, "MB", "created (UTC)");
+  fmt::print("{:<12}  {:<{}}  {:>9}  {:>6}  {:>6}  {:<{}}  {:<6}  {:>8}  {}\n", "key", "scene",
+             scene_width, "size", "spp", "seed", "path class", class_width, "pixels", "MB",
+             "created (UTC)");
   bool any_stale = false;
   for (const ref::StoreEntry& e : entries) {
     std::string created = e.created.substr(0, 19);
     std::replace(created.begin(), created.end(), 'T', ' ');
-    fmt::print("{:<12}  {:<{}}  {:>9}  {:>6}  {:>6}  {:<{}}  {:>8.1f}  {}{}\n", shortKey(e.key),
-               sceneLabel(e), scene_width, fmt::format("{}x{}", e.spec.width, e.spec.height),
-               e.spec.spp, e.spec.seed, scene::describePathClass(e.spec.path_class), class_width,
-               megabytes(e.size_bytes), created, e.current ? "" : "  stale");
+    fmt::print("{:<12}  {:<{}}  {:>9}  {:>6}  {:>6}  {:<{}}  {:<6}  {:>8.1f}  {}{}\n",
+               shortKey(e.key), sceneLabel(e), scene_width,
+               fmt::format("{}x{}", e.spec.width, e.spec.height), e.spec.spp, e.spec.seed,
+               scene::describePathClass(e.spec.path_class), class_width,
+               ref::pixelSamplingName(e.spec.pixel_sampling), megabytes(e.size_bytes), created,
+               e.current ? "" : "  stale");
     any_stale = any_stale || !e.current;
   }
   fmt::print("{} {}, {:.1f} MB in {}\n", entries.size(), entries.size() == 1 ? "entry" : "entries",

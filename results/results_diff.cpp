@@ -34,6 +34,10 @@ Verdict judgeMetric(double base, double next, const Tolerance& tolerance, const 
     return std::isnan(next) ? Verdict::kRegressed : Verdict::kImproved;
   }
   if (base == next) return Verdict::kUnchanged;
+  // A value that describes an error (how concentrated it is) has no better direction.
+  if (const metrics::MetricValueInfo* info = metrics::findMetricValue(name);
+      info && info->direction == metrics::MetricDirection::kDescriptive)
+    return Verdict::kUnchanged;
   const double change = next - base;
   const double allowed = std::max(tolerance.absolute, tolerance.relative * std::abs(base));
   const bool finite = std::isfinite(base) && std::isfinite(next);

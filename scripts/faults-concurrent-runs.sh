@@ -27,8 +27,9 @@ while [ $# -gt 0 ]; do
 done
 faults_work_dir concurrent
 suite="$work/concurrent.toml"
-# Four cases, five references: the Cornell box's direct-light and full references are each
-# needed by two jobs (a technique's reference and its full reference, and the reference job).
+# Four cases, five references: the Cornell box's direct job asks for box-filtered references
+# (docs/rendering.md, "Pixel sampling"), so its full reference is also the reference job's, and
+# two jobs of every run need it; the chamber's direct job has its pixel-centre pair.
 references=5
 cat >"$suite" <<'TOML'
 name = "concurrent"
@@ -43,6 +44,7 @@ spp = 64
 [[case]]
 scene = "cornell"
 technique = "direct"
+reference = { pixel_sampling = "area" }
 [[case]]
 scene = "cornell"
 technique = "reference"

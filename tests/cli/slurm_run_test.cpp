@@ -264,8 +264,9 @@ TEST_F(SlurmRun, ArraysMergeLikeALocalRunSurviveCancelAndFailureAndShareTheStore
     ASSERT_EQ(submit(dir_ / "other.toml", dir_ / "second", store).exit_code, 0);
     EXPECT_EQ(awaitMerge(dir_ / "first"), 0);
     EXPECT_EQ(awaitMerge(dir_ / "second"), 0);
-    // Two distinct references (all paths; LE + LDE), whichever task got each first.
-    EXPECT_EQ(referencesRendered(dir_ / "first") + referencesRendered(dir_ / "second"), 2);
+    // Three distinct references, whichever task got each first: the reference job's (all paths,
+    // box-filtered) and the technique jobs' pixel-centre ones (LE + LDE; all paths).
+    EXPECT_EQ(referencesRendered(dir_ / "first") + referencesRendered(dir_ / "second"), 3);
   }
 
   SCOPED_TRACE("the merged smoke report in headless Chromium");

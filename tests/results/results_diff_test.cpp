@@ -87,6 +87,18 @@ TEST(ResultsDiff, EnergyRatioIsJudgedByItsDistanceFromOne) {
   EXPECT_EQ(metricVerdict({{"energy_ratio", 1.2}}, {{"energy_ratio", 1.05}}), Verdict::kImproved);
 }
 
+// How concentrated relMSE is describes the error, with no better direction: a bisect must not
+// stop at a commit that merely moved the error between pixels.
+TEST(ResultsDiff, ConcentrationSharesNeverRegressOrImprove) {
+  EXPECT_EQ(metricVerdict({{"relmse_top1pct_share", 0.39}}, {{"relmse_top1pct_share", 0.36}}),
+            Verdict::kUnchanged);
+  EXPECT_EQ(metricVerdict({{"relmse_top0p1pct_share", 0.1}}, {{"relmse_top0p1pct_share", 0.9}}),
+            Verdict::kUnchanged);
+  // relMSE without the worst pixels is an error like any other.
+  EXPECT_EQ(metricVerdict({{"relmse_trim1pct", 0.01}}, {{"relmse_trim1pct", 0.02}}),
+            Verdict::kRegressed);
+}
+
 TEST(ResultsDiff, FullReferenceValuesAreComparedUnderTheirOwnName) {
   RunResults base = runWith("base", {{"relmse", 0.02}});
   RunResults next = runWith("next", {{"relmse", 0.02}});
