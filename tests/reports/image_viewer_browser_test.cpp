@@ -300,7 +300,8 @@ TEST_F(ImageViewerBrowser, AProbeWithoutACentreIsCentredInThePane) {
   // The pane's centre shows the probe pixel (of the reference, the left layer).
   const double w = out["pane"][0], h = out["pane"][1];
   EXPECT_EQ(pixelAt(out["view"], out["pane"], w / 2 + 0.5, h / 2 + 0.5), std::make_pair(4, 5));
-  const float* value = test::syntheticViewerImage(job, "reference").pixel(4, 5);
+  const image::Image reference = test::syntheticViewerImage(job, "reference");
+  const float* value = reference.pixel(4, 5);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(out["centre"][c].get<int>(), srgb8(value[c]), 1);
 }
 
