@@ -158,12 +158,6 @@ std::vector<std::string> orderedUnique(const std::vector<results::JobResult>& jo
   return names;
 }
 
-std::optional<double> valueOf(const results::NamedValues& values, const std::string& name) {
-  for (const auto& [key, value] : values)
-    if (key == name) return value;
-  return std::nullopt;
-}
-
 // What the job's class metrics measure, short: the reference's path class and pixel sampling, or
 // for a reference job its checkpoint against the stored reference.
 std::string classReferenceLabel(const results::JobResult& job) {
@@ -186,10 +180,10 @@ std::string metricLines(const results::RunResults& results, const results::JobRe
                         const std::optional<JobComparison>& compared) {
   const std::string& metric = results.primary_metric;
   std::string html;
-  if (const std::optional<double> value = valueOf(job.metrics, metric))
+  if (const std::optional<double> value = results::findValue(job.metrics, metric))
     html += metricLine(metric, *value, compared ? compared->findMetric(metric) : nullptr,
                        classReferenceLabel(job));
-  if (const std::optional<double> full = valueOf(job.metrics_full, metric);
+  if (const std::optional<double> full = results::findValue(job.metrics_full, metric);
       full && job.full_reference)
     html += metricLine(metric, *full, compared ? compared->findMetric("full:" + metric) : nullptr,
                        "full: " + referenceLabel(*job.full_reference));

@@ -31,9 +31,7 @@ std::string convergenceMetric(const results::Convergence& convergence, const std
 }
 
 double valueOf(const results::NamedValues& values, const std::string& name) {
-  for (const auto& [key, value] : values)
-    if (key == name) return value;
-  return kNoValue;
+  return results::findValue(values, name).value_or(kNoValue);
 }
 
 // One run's value of a job, for a trend; NaN when the run lacks the job or the value.

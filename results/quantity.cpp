@@ -21,12 +21,6 @@ bool startsWith(std::string_view text, std::string_view prefix) {
   return text.substr(0, prefix.size()) == prefix;
 }
 
-std::optional<double> findValue(const NamedValues& values, std::string_view name) {
-  for (const auto& [key, value] : values)
-    if (key == name) return value;
-  return std::nullopt;
-}
-
 std::optional<double> parseNumber(const std::string& text) {
   double value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);

@@ -31,10 +31,14 @@ std::optional<double> JobResult::runMedianMs() const {
   return metrics::quantile(medians, 0.5);
 }
 
-std::optional<double> JobResult::metric(const std::string& name) const {
-  for (const auto& [key, value] : metrics)
+std::optional<double> findValue(const NamedValues& values, std::string_view name) {
+  for (const auto& [key, value] : values)
     if (key == name) return value;
   return std::nullopt;
+}
+
+std::optional<double> JobResult::metric(const std::string& name) const {
+  return findValue(metrics, name);
 }
 
 const JobResult* RunResults::findJob(const std::string& id) const {

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -22,6 +23,8 @@ inline constexpr const char* kResultsSchemaName = "gibench-results";
 
 // Named numbers in a fixed order (metrics in catalogue order: "relmse", "flip_mean", …).
 using NamedValues = std::vector<std::pair<std::string, double>>;
+// The value named `name`, if there is one.
+std::optional<double> findValue(const NamedValues& values, std::string_view name);
 // Canonical key=value parameters in suite-file order.
 using Assignments = std::vector<std::pair<std::string, std::string>>;
 

@@ -43,12 +43,6 @@ std::vector<std::string> metricColumns(const RunResults& results, NamedValues Jo
   return names;
 }
 
-std::optional<double> findValue(const NamedValues& values, const std::string& name) {
-  for (const auto& [key, value] : values)
-    if (key == name) return value;
-  return std::nullopt;
-}
-
 void appendRow(const std::vector<std::string>& fields, std::string& out) {
   for (std::size_t i = 0; i < fields.size(); ++i) {
     if (i) out += ',';

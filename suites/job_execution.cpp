@@ -335,12 +335,8 @@ image::Image recordPrimaryAgreement(const PreparedJob& p, const JobEnvironment& 
   const ref::PrimaryAgreement agreement =
       ref::comparePrimarySurfaces(p.scene, primary.position, primary.normal);
   result.disagreement_pixels = static_cast<long long>(agreement.disagreements);
-  image::Image mask(agreement.mask.width(), agreement.mask.height());
-  for (int y = 0; y < mask.height(); ++y)
-    for (int x = 0; x < mask.width(); ++x)
-      for (int c = 0; c < 3; ++c) mask.pixel(x, y)[c] = agreement.mask.pixel(x, y)[0];
   const fs::path png = job_dir / "disagreement.png";
-  image::writePng(png, mask);
+  image::writePng(png, agreement.mask);  // one channel: shown grey, so white where they disagree
   result.outputs.disagreement_png = relativePath(env.run_dir, png);
   return agreement.mask;
 }
