@@ -1,6 +1,6 @@
-// The (0,2)-sequence of Sobol's first two dimensions, randomised by Owen scrambling (docs/
-// architecture.md, "Randomness"). Owen scrambling keeps the net structure of the points (every
-// aligned block of 2^m points is a (0,m,2)-net: one point in each of the 2^m elementary
+// The (0,2)-sequence of Sobol's first two dimensions, randomised by Owen scrambling
+// (docs/architecture.md, "Randomness"). Owen scrambling keeps the net structure of the points
+// (every aligned block of 2^m points is a (0,m,2)-net: one point in each of the 2^m elementary
 // rectangles of any shape) while making each point uniform in [0,1)², so estimates stay
 // unbiased and independent scramblings give independent estimates.
 //

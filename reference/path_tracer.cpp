@@ -254,7 +254,8 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
     // say) would let the weights of long paths in a lossless medium grow as 0.95^−k, a heavy tail
     // that hides energy in rare paths at any practical sample count. q = √throughput rather than
     // the throughput itself ends paths later (survivors' weights fall as √throughput): 5–11%
-    // more efficient on every built-in scene (docs/rendering.md, "Russian roulette").
+    // more efficient on every built-in scene (docs/rendering.md, "Rendering ground truth": its
+    // Russian roulette).
     if (bounces >= kRouletteStartBounce) {
       const float q = std::min(1.0f, std::sqrt(maxComponent(throughput)));
       if (q < 1.0f) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# How often `gibench store verify` fails an intact entry (docs/harness.md, "The reference store"):
+# How often `gibench store verify` fails an intact entry (docs/harness.md, "Reference store"):
 # stores N references of one scene that differ only in their seed (so each is an independent,
 # intact entry), verifies every one at each fresh-render spp given, and prints the failures. At
 # family-wise significance α an intact entry should fail with probability at most α; the counts

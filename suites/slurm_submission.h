@@ -1,4 +1,5 @@
-// `gibench run SUITE --slurm`: a suite run as Slurm job arrays (docs/harness.md, "Slurm").
+// `gibench run SUITE --slurm`: a suite run as Slurm job arrays (docs/harness.md, "Runs on many
+// machines").
 //
 // One submission writes, under DIR/slurm/<n>/ (n = 1, then 2, … for each --resume):
 //   cpu.tasks, gpu.tasks    one task per line: "run <job id>" or "references <job id>"

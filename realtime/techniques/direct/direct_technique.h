@@ -2,8 +2,10 @@
 // with shadow maps (book Ch. 4): hard, percentage-closer filtered or variance shadow maps; area
 // lights and the sky as many light samples, a shadow map each, so that the image converges to the
 // exact direct illumination as the sample count grows. Deferred: one g-buffer pass, then per
-// light sample a shadow map and a full-screen shading pass added into the frame. The lighting
-// itself is the shared realtime/lighting/ block; see README.md beside this file.
+// batch of up to 32 light samples their shadow maps (the layers of one array texture, drawn by
+// one multi-draw) and one full-screen shading pass that loops over the batch, added into the
+// frame. The lighting itself is the shared realtime/lighting/ block; see README.md beside this
+// file.
 #pragma once
 
 #include "realtime/gbuffer/gbuffer.h"
