@@ -3,6 +3,7 @@
 
 #include "metrics/tone_map.h"
 #include "reference/rng.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,10 @@
 
 namespace gib::metrics {
 namespace {
+
+// A correct metric misses one of this file's two statistical tests (Gaussian noise's MSE and
+// MAE) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 2);
 
 // A smooth positive image with values between 0.1 and 1.1.
 image::Image makeReference(int width = 64, int height = 48) {
@@ -62,8 +67,8 @@ TEST(ImageMetrics, ScaledImageGivesClosedFormRelativeErrors) {
 }
 
 TEST(ImageMetrics, GaussianNoiseGivesItsVarianceAsMse) {
-  // 64·48·3 noise values of σ = 0.1: the MSE's standard error is σ²·sqrt(2/n) ≈ 1.2e-4, so
-  // a 5-standard-error bound fails by chance with probability below 1e-6.
+  // n = 64·48·3 noise values of σ = 0.1: the MSE estimates σ² with standard error σ²·√(2/n), the
+  // MAE σ·√(2/π) with standard error σ·√((1 − 2/π)/n).
   const image::Image r = makeReference();
   image::Image t = r;
   std::uint32_t i = 0;
@@ -74,8 +79,9 @@ TEST(ImageMetrics, GaussianNoiseGivesItsVarianceAsMse) {
     v += float(0.1 * std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2));
   }
   const double n = double(r.data().size());
-  EXPECT_NEAR(computeMse(r, t).value, 0.01, 5 * 0.01 * std::sqrt(2 / n));
-  EXPECT_NEAR(computeMae(r, t).value, 0.1 * std::sqrt(2 / std::numbers::pi), 0.003);
+  EXPECT_TRUE(kFamily.zTest(computeMse(r, t).value, 0.01, 0.01 * std::sqrt(2 / n)));
+  EXPECT_TRUE(kFamily.zTest(computeMae(r, t).value, 0.1 * std::sqrt(2 / std::numbers::pi),
+                            0.1 * std::sqrt((1 - 2 / std::numbers::pi) / n)));
 }
 
 TEST(ImageMetrics, EnergyRatioIsTheRatioOfMeanLuminances) {

@@ -2,6 +2,7 @@
 #include "metrics/z_test.h"
 
 #include "reference/rng.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,11 @@ namespace {
 
 constexpr int kSize = 32;
 constexpr double kStandardError = 0.05;  // of each per-pixel mean
+constexpr int kTrials = 200;             // of each rejection rate below
+
+// A correct Z-test rejects unbiased images more often than its significance allows in one of
+// this file's two rate tests (with known variances, with estimated ones) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 2);
 
 double gaussian(ref::SampleStream& random) {
   double u1 = 1.0 - random.next(), u2 = random.next();
@@ -32,18 +38,19 @@ image::Image estimate(std::uint64_t seed, double bias) {
 }
 
 TEST(ZTest, AcceptsUnbiasedImagesAtTheStatedRate) {
-  // At a family-wise significance of 1%, 200 independent unbiased trials reject ~2 times; more
-  // than 8 has probability ≈ 0.1% under Binomial(200, 0.01).
+  // At its family-wise significance (1% by default) the Z-test rejects independent unbiased
+  // trials with that probability or less (Binomial(200, 0.01): ~2 of them).
+  const ZTestOptions options;
   const image::Image variance(kSize, kSize, 3, float(kStandardError * kStandardError));
-  int rejected = 0;
-  for (int trial = 0; trial < 200; ++trial) {
+  std::size_t rejected = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
     const image::Image reference = estimate(1000 + trial, 0.0);
     const image::Image test = estimate(5000 + trial, 0.0);
-    ZTestResult r = zTest(reference, variance, test, variance);
+    ZTestResult r = zTest(reference, variance, test, variance, options);
     EXPECT_EQ(r.tested, std::size_t(kSize * kSize * 3));
     rejected += !r.passed;
   }
-  EXPECT_LE(rejected, 8);
+  EXPECT_TRUE(kFamily.binomialAtMost(rejected, kTrials, options.significance));
 }
 
 TEST(ZTest, RejectsABiasedImage) {
@@ -87,17 +94,17 @@ ReplicaEstimate replicaEstimate(std::uint64_t seed, int replicas) {
 TEST(ZTest, EstimatedVariancesNeedTheirDegreesOfFreedom) {
   // Variances from 8 replicas (7 dof each). Read as exact, the statistic's tails are Student's,
   // far heavier than the normal's: most unbiased trials fail. With the degrees of freedom given,
-  // the rejection rate is the stated 1% (more than 8 of 200 has probability ≈ 0.1%).
+  // the rejection rate is the stated 1%.
   ZTestOptions with_dof;
   with_dof.reference_variance_dof = with_dof.test_variance_dof = 7;
-  int rejected_as_exact = 0, rejected_with_dof = 0;
-  for (int trial = 0; trial < 200; ++trial) {
+  std::size_t rejected_as_exact = 0, rejected_with_dof = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
     const ReplicaEstimate a = replicaEstimate(100 + trial, 8), b = replicaEstimate(700 + trial, 8);
     rejected_as_exact += !zTest(a.mean, a.variance, b.mean, b.variance).passed;
     rejected_with_dof += !zTest(a.mean, a.variance, b.mean, b.variance, with_dof).passed;
   }
-  EXPECT_LE(rejected_with_dof, 8);
-  EXPECT_GT(rejected_as_exact, 100);
+  EXPECT_TRUE(kFamily.binomialAtMost(rejected_with_dof, kTrials, with_dof.significance));
+  EXPECT_GT(rejected_as_exact, std::size_t(kTrials / 2));
 }
 
 TEST(ZTest, DifferencePValueIsStudentsTWithWelchDegreesOfFreedom) {

@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "support/render_statistics.h"
+#include "support/statistical_test.h"
 #include "support/technique_frame.h"
 
 #include <gtest/gtest.h>
@@ -52,16 +53,15 @@ double meanOf(const image::Image& image) {
   return sum / double(image.data().size());
 }
 
-// The comparisons with the reference's image mean in this file (expectMatchesReference's
-// calls): one family for the significance below.
-constexpr double kReferenceComparisons = 5;
+// A correct technique misses one of this file's five comparisons with the reference's image mean
+// (expectMatchesReference's calls) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 5);
 
 // Within the class, a light that nothing occludes must be reproduced: the image mean agrees
-// with the reference's within its standard error (test::imageMean: the channels of a pixel are
-// not independent) times the bound that holds all of this file's comparisons at once with 99%
-// (Student's t with the pixels' pooled degrees of freedom, Šidák), plus 0.5% for the difference
-// between GL's pixel-centre sample and the reference's pixel-area average; the per-pixel relative
-// error is small everywhere.
+// with the reference's by a t test on its standard error (test::imageMean: the channels of a
+// pixel are not independent; Student's t with the pixels' pooled degrees of freedom), allowing
+// 0.5% for the difference between GL's pixel-centre sample and the reference's pixel-area
+// average; the per-pixel relative error is small everywhere.
 void expectMatchesReference(const scene::Scene& scene, const std::vector<std::string>& set,
                             double pixel_mape) {
   const int w = 48, h = 48;
@@ -69,10 +69,8 @@ void expectMatchesReference(const scene::Scene& scene, const std::vector<std::st
   const ref::RenderResult reference = renderDirectReference(scene, w, h, 64);
   const test::ImageMean truth = test::imageMean(reference);
   const double m_test = meanOf(test), m_ref = truth.mean;
-  const double bound = test::familyWiseBound(truth.dof, kReferenceComparisons, 0.01);
   EXPECT_GT(m_ref, 0.0);
-  EXPECT_NEAR(m_test, m_ref, bound * truth.standard_error + 0.005 * m_ref)
-      << "test mean " << m_test << ", reference mean " << m_ref << " ± " << truth.standard_error;
+  EXPECT_TRUE(kFamily.tTest(m_test, m_ref, truth.standard_error, truth.dof, 0.005 * m_ref));
   const double mape = metrics::computeMape(reference.mean, test).value;
   EXPECT_LT(mape, pixel_mape);
   EXPECT_EQ(image::countNonFinite(test), 0u);

@@ -1,11 +1,10 @@
 // Random texel selection (Barsi & Jakab §3.1, book §7.1.1): both the GPU pyramid descent and the
-// CPU read-back search choose texels with probability proportional to their power. Each
-// chi-square test is at significance 0.01: a correct selector fails it with probability 1%
+// CPU read-back search choose texels with probability proportional to their power, by chi-square
 // (the seeds are fixed, so a given build either passes or fails every time).
 #include "realtime/techniques/stochastic_radiosity/texel_selection.h"
 
-#include "support/chi_square.h"
 #include "support/gl_test_context.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +18,9 @@ namespace {
 
 using test::GlTest;
 
-constexpr double kSignificance = 0.01;
+// Correct selectors fail one of this file's two chi-square tests (the GPU's, the CPU's) with
+// probability 1%.
+constexpr test::TestFamily kFamily(0.01, 2);
 constexpr int kResolution = 16;
 constexpr int kSelections = 40000;
 
@@ -72,11 +73,11 @@ TEST_P(TexelSelectionTest, FrequenciesFollowPowerByChiSquare) {
       EXPECT_EQ(observed[i], 0.0) << "texel " << i << " has no power";
     }
   }
-  EXPECT_GT(test::chiSquarePValue(observed, expected), kSignificance);
+  EXPECT_TRUE(kFamily.chiSquare(observed, expected));
 
   // The test has power: the same counts are far from a uniform choice.
   std::vector<double> uniform(power.size(), double(kSelections) / double(power.size()));
-  EXPECT_LT(test::chiSquarePValue(observed, uniform), 1e-9);
+  EXPECT_FALSE(kFamily.chiSquare(observed, uniform));
 }
 
 TEST_P(TexelSelectionTest, NothingIsSelectedWhenNothingHasPower) {

@@ -3,6 +3,7 @@
 // path class limited to one bounce the floor's radiance is ρ/π · E exactly.
 #include "reference/path_tracer.h"
 #include "scene/mesh_builder.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -16,6 +17,11 @@ namespace {
 
 constexpr float kAlbedo = 0.5f;
 constexpr double kPi = std::numbers::pi;
+constexpr std::uint32_t kSamples = 20000;  // paths of each estimate that carries noise
+
+// A correct path tracer fails one of this file's statistical tests with probability 1%: the area
+// light's five points and the constant sky. The delta lights' estimates have no noise.
+constexpr test::TestFamily kFamily(0.01, 5 + 1);
 
 // A 40 × 40 floor at y = 0 facing up; nothing else unless a test adds it.
 scene::Scene makeFloorScene() {
@@ -97,11 +103,8 @@ TEST(AnalyticDirect, RectangularAreaLightMatchesLambertsFormula) {
       {0, 0, 0}, {0.4f, 0, 0.2f}, {1.5f, 0, 0.3f}, {-3, 0, 2}, {0.7f, 0, -0.6f}};
   for (std::size_t i = 0; i < points.size(); ++i) {
     double expected = kAlbedo / kPi * polygonIrradiance(polygon, points[i], 2.0);
-    Estimate e = estimateFloorRadiance(tracer, points[i], 20000, std::uint32_t(i));
-    // 3 standard errors: each point fails by chance with probability 0.27%.
-    EXPECT_NEAR(e.mean, expected, 3 * e.standard_error)
-        << "point " << i << " expected " << expected << " got " << e.mean << " ± "
-        << e.standard_error;
+    Estimate e = estimateFloorRadiance(tracer, points[i], kSamples, std::uint32_t(i));
+    EXPECT_TRUE(kFamily.tTest(e.mean, expected, e.standard_error, kSamples - 1)) << "point " << i;
     EXPECT_LT(e.standard_error, 0.02 * expected) << "the estimate should be informative";
   }
 }
@@ -146,8 +149,8 @@ TEST(AnalyticDirect, ConstantSkyGivesAlbedoTimesSkyRadiance) {
   s.sky_radiance = scene::Rgb(0.8f);
   const PathTracer tracer(s, PathClass{1, 1});
   // E = π L on an unoccluded plane, so L_out = ρ/π · π L = ρ L.
-  Estimate e = estimateFloorRadiance(tracer, {0, 0, 0}, 20000, 0);
-  EXPECT_NEAR(e.mean, kAlbedo * 0.8, 3 * e.standard_error + 1e-6);
+  Estimate e = estimateFloorRadiance(tracer, {0, 0, 0}, kSamples, 0);
+  EXPECT_TRUE(kFamily.tTest(e.mean, kAlbedo * 0.8, e.standard_error, kSamples - 1, 1e-6));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include "reference/path_sampler.h"
 #include "reference/rng.h"
 #include "scene/mesh_builder.h"
-#include "support/chi_square.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@
 namespace gib::ref {
 namespace {
 
-// Significance of each chi-square test here: a correct sampler fails one with probability 1e-3.
-constexpr double kSignificance = 1e-3;
+// A correct sampler fails this file's one statistical test (its chi-square) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 1);
 
 // Three emitting triangles at y = 1 facing down: a unit right triangle of radiance 1 and a
 // 1 × 2 rectangle (two triangles) of radiance 3, so the powers are 0.5 : 3 : 3.
@@ -94,7 +94,7 @@ TEST(AreaLightSampler, PointsAreUniformOverEachEmitterWithTheStatedDensity) {
   std::vector<double> expected(observed.size(), rectangle_cell);
   expected.back() = sampler.pdfArea(0) * 0.5 * kSamples;
   EXPECT_NEAR(sampler.pdfArea(0) * 0.5, 0.5 / 6.5, 1e-6);
-  EXPECT_GT(test::chiSquarePValue(observed, expected), kSignificance);
+  EXPECT_TRUE(kFamily.chiSquare(observed, expected));
 }
 
 }  // namespace

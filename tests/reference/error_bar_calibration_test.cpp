@@ -2,12 +2,12 @@
 // scrambled replicas) says how far a pixel may be from the truth, and it is right as often as
 // its distribution says. Checked on a scene with a known answer (the furnace: every pixel is
 // exactly 1) and on the Cornell box against a render four times longer (whose own error is in
-// the statistic). Each count of pixels
-// beyond a bound is tested against its binomial distribution at significance 0.001.
-#include "metrics/distributions.h"
+// the statistic). Each count of pixels beyond a bound is tested against its binomial
+// distribution.
 #include "metrics/z_test.h"
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 
@@ -17,16 +17,9 @@
 namespace gib::ref {
 namespace {
 
-// Two-sided p-value of `count` successes in `n` trials of probability p (twice the smaller
-// tail, at most 1).
-double binomialPValue(std::size_t count, std::size_t n, double p) {
-  // P(X ≥ k) = I_p(k, n − k + 1); P(X ≤ k) = 1 − P(X ≥ k + 1).
-  auto at_least = [&](std::size_t k) {
-    return k == 0 ? 1.0 : metrics::regularizedBetaI(double(k), double(n - k + 1), p);
-  };
-  const double upper = at_least(count), lower = 1.0 - at_least(count + 1);
-  return std::min(1.0, 2.0 * std::min(upper, lower));
-}
+// Calibrated error bars fail one of this file's four binomial tests (two tails, each in the
+// furnace and the Cornell box) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 4);
 
 // The normal's two-sided tail beyond ±2 and ±3 standard errors: the fractions of pixels a
 // calibrated error bar leaves outside, once each statistic is mapped to the normal through its
@@ -39,12 +32,9 @@ void expectCalibrated(const std::vector<double>& p_values, const char* what) {
   for (double bound : {kBeyondTwo, kBeyondThree}) {
     std::size_t beyond = 0;
     for (double p : p_values) beyond += p < bound;
-    const double p_value = binomialPValue(beyond, p_values.size(), bound);
-    EXPECT_GT(p_value, 0.001) << what << ": " << beyond << " of " << p_values.size()
-                              << " beyond the normal's " << bound << " tail, expected "
-                              << bound * double(p_values.size());
-    std::printf("%s: %zu of %zu values beyond the %.4f tail (expected %.1f; binomial p %.3f)\n",
-                what, beyond, p_values.size(), bound, bound * double(p_values.size()), p_value);
+    const ::testing::AssertionResult calibrated = kFamily.binomial(beyond, p_values.size(), bound);
+    EXPECT_TRUE(calibrated) << what;
+    std::printf("%s: %s\n", what, calibrated.message());
   }
 }
 
@@ -71,8 +61,8 @@ TEST(ErrorBarCalibration, FurnacePixelsMissTheTruthAsOftenAsTheirErrorBarsSay) {
   std::size_t beyond_three = 0;
   for (std::size_t i = 0; i < r.mean.pixelCount(); ++i)
     beyond_three += std::abs(r.mean.data()[3 * i] - 1.0) > 3 * std::sqrt(r.variance.data()[3 * i]);
-  EXPECT_LT(binomialPValue(beyond_three, r.mean.pixelCount(), kBeyondThree), 0.001)
-      << beyond_three << " beyond ±3 standard errors";
+  EXPECT_FALSE(kFamily.binomial(beyond_three, r.mean.pixelCount(), kBeyondThree))
+      << "beyond ±3 standard errors";
 }
 
 TEST(ErrorBarCalibration, CornellPixelsMissALongerRenderAsOftenAsTheirErrorBarsSay) {

@@ -1,12 +1,11 @@
 // Volumetric ground truth: free-flight sampling and transmittance against the exact optical depth
 // of the particles' linear fall-off, Henyey–Greenstein sampling (chi-square), the volumetric
 // furnace, and path classes in the medium.
-#include "metrics/distributions.h"
 #include "reference/medium_tracking.h"
 #include "reference/phase_function.h"
 #include "reference/progressive_renderer.h"
-#include "support/chi_square.h"
 #include "support/render_statistics.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -15,6 +14,17 @@
 
 namespace gib::ref {
 namespace {
+
+constexpr int kFurnaceSize = 12;    // pixels across the volumetric furnace's renders
+constexpr int kFurnaceRenders = 4;  // two asymmetries, each seen from two eyes
+
+// A correct renderer fails one of this file's statistical tests with probability 1%: two for
+// each of the four chords' transmittance, one chi-square for each of the five asymmetries, every
+// value and the image mean of each volumetric furnace render, and the direct layer against single
+// scattering.
+constexpr test::TestFamily kFamily(0.01,
+                                   4 * 2 + 5 +
+                                       kFurnaceRenders * (3 * kFurnaceSize * kFurnaceSize + 1) + 1);
 
 // Optical depth of a chord at distance b from the centre of a particle of radius r and density
 // τ with linear fall-off: ∫ τ(1 − √(b² + s²)/r) ds over |s| ≤ h = √(r² − b²)
@@ -56,10 +66,11 @@ TEST_P(Transmittance, RatioAndDeltaTrackingMatchBeerLambert) {
   }
   const double mean = sum / kSamples;
   const double se = std::sqrt((sum_squares / kSamples - mean * mean) / (kSamples - 1));
-  // Within 3 standard errors (each check fails by chance with probability 0.27%).
-  EXPECT_NEAR(mean, expected, 3 * se + 1e-6) << "optical depth " << depth;
-  const double p = expected;
-  EXPECT_NEAR(double(escaped) / kSamples, p, 3 * std::sqrt(p * (1 - p) / kSamples) + 1e-6);
+  // The mean transmittance, its standard error from the samples' spread (1e-6 for float
+  // rounding); the escapes, each with the probability the transmittance gives.
+  EXPECT_TRUE(kFamily.tTest(mean, expected, se, kSamples - 1, 1e-6)) << "optical depth " << depth;
+  EXPECT_TRUE(kFamily.binomial(std::size_t(escaped), kSamples, expected))
+      << "optical depth " << depth;
 }
 
 INSTANTIATE_TEST_SUITE_P(Offsets, Transmittance, ::testing::Values(0.0, 0.25, 0.6, 0.95));
@@ -67,15 +78,14 @@ INSTANTIATE_TEST_SUITE_P(Offsets, Transmittance, ::testing::Values(0.0, 0.25, 0.
 class HenyeyGreensteinChiSquare : public ::testing::TestWithParam<float> {};
 
 TEST_P(HenyeyGreensteinChiSquare, MatchesItsDensity) {
-  // Significance 1% family-wise over the five values of g (Šidák).
   const float g = GetParam();
   const glm::vec3 incoming = glm::normalize(glm::vec3(0.3f, -0.4f, 0.8f));
-  double p = test::chiSquarePValue(
+  EXPECT_TRUE(kFamily.chiSquare(
       [&](SampleStream& r) {
         return sampleHenyeyGreenstein(incoming, g, {r.next(), r.next()});
       },
-      [&](const glm::vec3& w) { return double(henyeyGreenstein(glm::dot(incoming, w), g)); });
-  EXPECT_GT(p, metrics::sidakSignificance(0.01, 5)) << "g = " << g;
+      [&](const glm::vec3& w) { return double(henyeyGreenstein(glm::dot(incoming, w), g)); }))
+      << "g = " << g;
 }
 
 INSTANTIATE_TEST_SUITE_P(Asymmetries, HenyeyGreensteinChiSquare,
@@ -107,21 +117,17 @@ TEST(VolumetricFurnace, NonAbsorbingMediumUnderUniformSkyShowsTheSky) {
       scene::Scene view = s;
       view.camera.position = eye;
       RenderSettings settings;
-      settings.width = settings.height = 12;
+      settings.width = settings.height = kFurnaceSize;
       settings.spp = 64;
       const RenderResult r = renderReference(view, settings);
-      const double tests = double(r.mean.data().size());
-      const double t_max = test::familyWiseBound(r, tests, 0.01);
-      for (std::size_t i = 0; i < r.mean.data().size(); ++i) {
-        const double se = std::sqrt(double(r.variance.data()[i]));
-        EXPECT_LE(std::abs(r.mean.data()[i] - 0.7), t_max * se + 1e-5)
-            << "value " << i << " = " << r.mean.data()[i] << " g " << g << " eye " << eye.x;
-      }
-      // The image mean averages 432 values, so its statistic is close to normal. Four of them are
-      // tested: 3.5 standard errors each keeps the chance that a correct renderer fails one
-      // below 0.2% (3 would fail one run in ~90).
+      // Each value's statistic follows Student's t with the render's degrees of freedom (1e-5
+      // for float rounding).
+      for (std::size_t i = 0; i < r.mean.data().size(); ++i)
+        EXPECT_TRUE(kFamily.tTest(r.mean.data()[i], 0.7, std::sqrt(double(r.variance.data()[i])),
+                                  double(r.variance_dof), 1e-5))
+            << "value " << i << " g " << g << " eye " << eye.x;
       const test::ImageMean m = test::imageMean(r);
-      EXPECT_NEAR(m.mean, 0.7, 3.5 * m.standard_error + 1e-6) << "g " << g;
+      EXPECT_TRUE(kFamily.tTest(m.mean, 0.7, m.standard_error, m.dof, 1e-6)) << "g " << g;
     }
   }
 }
@@ -145,10 +151,11 @@ TEST(MediumPathClasses, SingleScatteringDiffersFromAllOrdersWhichConverges) {
   }
   // Multiple scattering adds light: far more than the noise of the two estimates.
   EXPECT_GT(all_sum - single_sum, 10 * std::sqrt(variance_sum));
-  // The direct layer of the all-orders render is the single-scattering image.
+  // The direct layer of the all-orders render is the single-scattering image, within the noise
+  // of the two renders' variance layers (768 values: a normal statistic).
   double direct_sum = 0;
   for (float v : all.direct.data()) direct_sum += v;
-  EXPECT_NEAR(direct_sum, single_sum, 5 * std::sqrt(variance_sum));
+  EXPECT_TRUE(kFamily.zTest(direct_sum, single_sum, std::sqrt(variance_sum)));
 
   // Convergence of all orders: RMSE against a 4096-spp render falls as spp^(−1/2).
   RenderSettings high = settings;

@@ -1,8 +1,8 @@
 // The reference's sampler: stratification of its points (every power-of-two prefix of a pixel's
-// samples is a (0,m,2)-net in each 2D dimension), uniformity and independence by chi-square
-// (each at significance 0.001), independence of replicas, determinism.
+// samples is a (0,m,2)-net in each 2D dimension), uniformity and independence by chi-square,
+// independence of replicas, determinism.
 #include "reference/path_sampler.h"
-#include "support/chi_square.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,9 @@
 namespace gib::ref {
 namespace {
 
-constexpr double kSignificance = 0.001;
+// A correct sampler fails one of this file's six statistical tests (five chi-square tests of
+// uniformity, the replicas' correlation) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 6);
 
 // The 2D points of dimension `d` of vertex `vertex` for samples first, first + step, … (n of
 // them) of `pixel`.
@@ -79,8 +81,8 @@ TEST(PathSampler, OneDimensionalDecisionsAreStratified) {
   }
 }
 
-// Counts of 2D values on a 16 × 16 grid, and their p-value against uniform.
-double uniformityPValue(const std::vector<glm::vec2>& values) {
+// Counts of 2D values on a 16 × 16 grid, by chi-square against uniform.
+::testing::AssertionResult uniform(const std::vector<glm::vec2>& values) {
   constexpr int kCells = 16;
   std::vector<double> observed(kCells * kCells, 0.0);
   for (const glm::vec2& v : values) {
@@ -88,7 +90,7 @@ double uniformityPValue(const std::vector<glm::vec2>& values) {
     observed[std::size_t(int(v.y * kCells) * kCells + int(v.x * kCells))] += 1;
   }
   const std::vector<double> expected(observed.size(), double(values.size()) / observed.size());
-  return test::chiSquarePValue(observed, expected);
+  return kFamily.chiSquare(observed, expected);
 }
 
 TEST(PathSampler, PointsAreUniformOverPixelsAndDimensionsAreIndependent) {
@@ -105,9 +107,9 @@ TEST(PathSampler, PointsAreUniformOverPixelsAndDimensionsAreIndependent) {
     sampler.startVertex(1);
     across_vertices.push_back({light, sampler.get1D(VertexDimension::kLightPoint)});
   }
-  EXPECT_GT(uniformityPValue(same_dimension), kSignificance);
-  EXPECT_GT(uniformityPValue(across_dimensions), kSignificance);
-  EXPECT_GT(uniformityPValue(across_vertices), kSignificance);
+  EXPECT_TRUE(uniform(same_dimension));
+  EXPECT_TRUE(uniform(across_dimensions));
+  EXPECT_TRUE(uniform(across_vertices));
 }
 
 TEST(PathSampler, ReplicasAreIndependent) {
@@ -121,17 +123,17 @@ TEST(PathSampler, ReplicasAreIndependent) {
     pairs.push_back({a, b});
     sxy += (a - 0.5) * (b - 0.5);
   }
-  EXPECT_GT(uniformityPValue(pairs), kSignificance);
-  // Correlation coefficient: sd 1/√n under independence; 3.3 sd is two-sided 0.001.
+  EXPECT_TRUE(uniform(pairs));
+  // The correlation coefficient: zero, with standard deviation 1/√n under independence.
   const double correlation = (sxy / 65536.0) / (1.0 / 12.0);
-  EXPECT_LT(std::abs(correlation), 3.3 / std::sqrt(65536.0));
+  EXPECT_TRUE(kFamily.zTest(correlation, 0.0, 1 / std::sqrt(65536.0)));
 }
 
 TEST(PathSampler, IndependentSamplerIsUniformButNotStratified) {
   std::vector<glm::vec2> p;
   for (std::uint32_t s = 0; s < 65536; ++s)
     p.push_back(PathSampler(4, 9, s, 1, SamplerKind::kIndependent).pixelPosition());
-  EXPECT_GT(uniformityPValue(p), kSignificance);
+  EXPECT_TRUE(uniform(p));
   // 256 independent points fill a 16 × 16 grid's cells one each with vanishing probability.
   EXPECT_FALSE(isZeroNet({p.begin(), p.begin() + 256}, 8));
 }

@@ -1,11 +1,9 @@
 // Chi-square goodness-of-fit tests of the direction samplers against their densities
-// (support/chi_square.h), rejecting at a family-wise significance of 1% (Šidák-corrected over
-// the tests in this file).
+// (support/statistical_test.h).
 #include "reference/sampling.h"
-#include "metrics/distributions.h"
 #include "reference/bsdf.h"
 #include "reference/rng.h"
-#include "support/chi_square.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -17,34 +15,28 @@
 namespace gib::ref {
 namespace {
 
-constexpr double kFamilySignificance = 0.01;
-constexpr double kTestsInFile = 6;  // chi-square tests below, for the Šidák correction
-
-using test::chiSquarePValue;
-
-double perTestSignificance() {
-  return metrics::sidakSignificance(kFamilySignificance, kTestsInFile);
-}
+// A correct sampler fails one of this file's six chi-square tests (cosine, three Phong lobes, the
+// Phong material, uniform) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 6);
 
 TEST(SamplingChiSquare, CosineHemisphereMatchesItsDensity) {
-  double p = chiSquarePValue(
+  EXPECT_TRUE(kFamily.chiSquare(
       [](SampleStream& r) {
         return sampleCosineHemisphere({r.next(), r.next()});
       },
-      [](const glm::vec3& w) { return double(cosineHemispherePdf(w.z)); });
-  EXPECT_GT(p, perTestSignificance());
+      [](const glm::vec3& w) { return double(cosineHemispherePdf(w.z)); }));
 }
 
 class PhongLobeChiSquare : public ::testing::TestWithParam<float> {};
 
 TEST_P(PhongLobeChiSquare, MatchesItsDensity) {
   const float n = GetParam();
-  double p = chiSquarePValue(
+  EXPECT_TRUE(kFamily.chiSquare(
       [n](SampleStream& r) {
         return samplePhongLobe({r.next(), r.next()}, n);
       },
-      [n](const glm::vec3& w) { return double(phongLobePdf(w.z, n)); });
-  EXPECT_GT(p, perTestSignificance()) << "exponent " << n;
+      [n](const glm::vec3& w) { return double(phongLobePdf(w.z, n)); }))
+      << "exponent " << n;
 }
 
 INSTANTIATE_TEST_SUITE_P(Exponents, PhongLobeChiSquare, ::testing::Values(1.0f, 10.0f, 100.0f));
@@ -61,7 +53,7 @@ TEST(SamplingChiSquare, PhongMaterialSamplerMatchesItsPdf) {
   const Bsdf bsdf(m, {0, 0, 1}, wo);
   // Glossy-lobe samples may fall below the surface, where Bsdf::pdf is zero because such a path
   // ends; the sampler's density there is the glossy share (0.5 / 0.8 by luminance) of the lobe.
-  double p = chiSquarePValue(
+  EXPECT_TRUE(kFamily.chiSquare(
       [&](SampleStream& r) {
         return bsdf.sample({r.next(), r.next()}).wi;
       },
@@ -70,27 +62,24 @@ TEST(SamplingChiSquare, PhongMaterialSamplerMatchesItsPdf) {
         // Below the surface only the glossy lobe reaches: its density there.
         glm::vec3 mirror = 2.0f * wo.z * glm::vec3(0, 0, 1) - wo;
         return (0.5 / 0.8) * double(phongLobePdf(glm::dot(mirror, w), m.exponent));
-      });
-  EXPECT_GT(p, perTestSignificance());
+      }));
 }
 
 TEST(SamplingChiSquare, UniformHemisphereMatchesItsDensity) {
-  double p = chiSquarePValue(
+  EXPECT_TRUE(kFamily.chiSquare(
       [](SampleStream& r) {
         return sampleUniformHemisphere({r.next(), r.next()});
       },
-      [](const glm::vec3& w) { return w.z > 0 ? double(kUniformHemispherePdf) : 0.0; });
-  EXPECT_GT(p, perTestSignificance());
+      [](const glm::vec3& w) { return w.z > 0 ? double(kUniformHemispherePdf) : 0.0; }));
 }
 
 TEST(SamplingChiSquare, RejectsAWrongDensity) {
   // The test must be able to fail: cosine samples against a uniform-hemisphere density.
-  double p = chiSquarePValue(
+  EXPECT_FALSE(kFamily.chiSquare(
       [](SampleStream& r) {
         return sampleCosineHemisphere({r.next(), r.next()});
       },
-      [](const glm::vec3& w) { return w.z > 0 ? double(kUniformHemispherePdf) : 0.0; });
-  EXPECT_LT(p, 1e-6);
+      [](const glm::vec3& w) { return w.z > 0 ? double(kUniformHemispherePdf) : 0.0; }));
 }
 
 TEST(Frame, IsOrthonormalForAnyNormal) {

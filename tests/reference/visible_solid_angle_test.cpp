@@ -7,6 +7,7 @@
 #include "scene/mesh_builder.h"
 #include "scene/occluded_light_bench.h"
 #include "scene/polygon_solid_angle.h"
+#include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -21,9 +22,9 @@ namespace {
 
 constexpr std::uint32_t kSamples = 200000;
 constexpr std::uint64_t kSeed = 20240611;
-// |estimate − exact| < 4 SE: each comparison holds with probability 99.994% (two-sided normal),
-// the 5 points together with ≥ 99.97% (Šidák: 0.999937⁵).
-constexpr double kStandardErrors = 4.0;
+// A correct estimate misses the exact value at one of the five points (a t test each, 199 999
+// degrees of freedom) with probability 1%.
+constexpr test::TestFamily kFamily(0.01, 5);
 // Shadow rays stop this fraction short of the light, so that they cannot hit it.
 constexpr double kShortOfTheLight = 1e-6;
 
@@ -102,8 +103,7 @@ TEST(VisibleSolidAngle, MatchesEmbreeShadowRaysWherePartlyOccluded) {
     EXPECT_LT(visible_fraction, 0.9);
     const Estimate estimate = estimateVisibleSolidAngle(embree, x, p);
     EXPECT_GT(estimate.standard_error, 0.0);
-    EXPECT_LT(std::abs(estimate.mean - exact), kStandardErrors * estimate.standard_error)
-        << "estimate " << estimate.mean << " ± " << estimate.standard_error << ", exact " << exact;
+    EXPECT_TRUE(kFamily.tTest(estimate.mean, exact, estimate.standard_error, kSamples - 1));
   }
 }
 
