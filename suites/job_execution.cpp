@@ -5,11 +5,7 @@
 #include "common/splitmix.h"
 #include "gib/version.h"
 #include "image/display.h"
-#include "image/exr_io.h"
 #include "image/output_files.h"
-#include "image/viewer_data.h"
-#include "metrics/convergence_fit.h"
-#include "metrics/error_map_display.h"
 #include "metrics/metric_registry.h"
 #include "metrics/pass_timing_summary.h"
 #include "realtime/technique_output.h"
@@ -19,12 +15,13 @@
 #include "reference/reference_output.h"
 #include "results/results_json.h"
 #include "scene/builtin_scenes.h"
+#include "suites/convergence_fit.h"
+#include "suites/job_images.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <set>
 
 namespace gib::suites {
@@ -36,10 +33,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string relativePath(const fs::path& run_dir, const fs::path& file) {
-  return file.lexically_relative(run_dir).generic_string();
 }
 
 // The class the reference is rendered for: the technique's own unless the suite says otherwise.
@@ -119,121 +112,20 @@ metrics::MetricReport measure(const image::Image& reference, const image::Image&
   return metrics::evaluateMetrics(reference, test, names, options);
 }
 
-// The metric the convergence fit follows: the one the index shows (relMSE when measured, else
-// the first value, as results::RunResults::primary_metric), so that the slope describes the
-// number a reader compares.
-std::string fitMetric(const results::NamedValues& values) {
-  for (const auto& [name, value] : values)
-    if (name == "relmse") return name;
-  return values.empty() ? std::string() : values.front().first;
-}
-
-// Least-squares slope of log(metric) against log(x) over the points where both are positive.
-void fitConvergence(results::Convergence& convergence) {
-  if (convergence.points.empty()) return;
-  const std::string metric = fitMetric(convergence.points.front().metrics);
-  std::vector<double> x, y;
-  for (const results::Convergence::Point& point : convergence.points)
-    for (const auto& [name, value] : point.metrics)
-      if (name == metric && point.x > 0 && value > 0 && std::isfinite(value)) {
-        x.push_back(std::log(point.x));
-        y.push_back(std::log(value));
-      }
-  if (x.size() < 2) return;
-  const metrics::LinearFit fit = metrics::fitLine(x, y);
-  convergence.fit_metric = metric;
-  convergence.fit_slope = fit.slope;
-  convergence.fit_intercept = fit.intercept;
-  convergence.fit_slope_ci95 = fit.slope_ci95;
-}
-
-// Thumbnails are at most this wide: a 100-job index stays light however large the images are.
-constexpr int kThumbnailWidth = 128;
-
-// The report viewer's linear data of the reference (mean and standard error of the mean), once
-// per reference and run: every job measured against it shares the file.
-std::string writeReferenceViewerData(const fs::path& run_dir,
-                                     const ref::StoredReference& reference) {
-  const fs::path path = run_dir / "viewer" / (reference.entry.key + ".js");
-  const std::string relative = relativePath(run_dir, path);
-  std::error_code ec;
-  if (fs::is_regular_file(path, ec)) return relative;  // written by another job of the run
-  fs::create_directories(path.parent_path(), ec);
-  image::Image standard_error;
-  if (reference.variance.pixelCount() > 0) {
-    standard_error = reference.variance;
-    for (float& value : standard_error.data()) value = std::sqrt(std::max(value, 0.0f));
-  }
-  image::writeViewerData(path, relative,
-                         {{"reference", &reference.mean}, {"stderr", &standard_error}});
-  return relative;
-}
-
-// A full-precision copy of the stored reference's EXR (mean, variance, direct and indirect
-// layers) in the run directory, once per reference and run, so the run stands alone.
-std::string copyReferenceExr(const fs::path& run_dir, const ref::StoredReference& reference) {
-  const fs::path path = run_dir / "references" / (reference.entry.key + ".exr");
-  const std::string relative = relativePath(run_dir, path);
-  std::error_code ec;
-  if (fs::is_regular_file(path, ec)) return relative;  // copied by another job of the run
-  fs::create_directories(path.parent_path(), ec);
-  image::copyFileAtomically(reference.entry.dir / "reference.exr", path);
-  return relative;
-}
-
-// reference.png (a copy of the store's, so the run directory stands alone), difference.png and
-// flip.png of `test` against `reference`; the thumbnail and the viewer's linear data.
-void writeComparisonImages(const fs::path& run_dir, const fs::path& job_dir,
-                           const ref::StoredReference& reference, const image::Image& test,
-                           const metrics::MetricReport& report, results::JobOutputs& outputs) {
-  const fs::path reference_png = job_dir / "reference.png";
-  image::writePng(reference_png, reference.mean);
-  outputs.reference_png = relativePath(run_dir, reference_png);
-  outputs.reference_exr = copyReferenceExr(run_dir, reference);
-  // A picture that is small enough already is its own thumbnail: no second copy of it.
-  const image::Image& pictured = test.width() > 0 ? test : reference.mean;
-  const std::string& small_enough = test.width() > 0 ? outputs.image_png : outputs.reference_png;
-  if (pictured.width() <= kThumbnailWidth && !small_enough.empty()) {
-    outputs.thumbnail_png = small_enough;
-  } else {
-    const fs::path thumbnail = job_dir / "thumbnail.png";
-    image::writePng(thumbnail, image::downsampleToWidth(pictured, kThumbnailWidth));
-    outputs.thumbnail_png = relativePath(run_dir, thumbnail);
-  }
-  outputs.reference_viewer_data = writeReferenceViewerData(run_dir, reference);
-  const image::Image* flip = nullptr;
-  for (const auto& [name, map] : report.maps)
-    if (name == "flip") flip = &map;
-  const fs::path viewer = job_dir / "viewer.js";
-  outputs.viewer_data = relativePath(run_dir, viewer);
-  image::writeViewerData(viewer, outputs.viewer_data, {{"image", &test}, {"flip", flip}});
-  if (test.width() == 0) return;
-  const fs::path difference_png = job_dir / "difference.png";
-  image::writePng(difference_png,
-                  metrics::errorMapForDisplay(
-                      "difference", metrics::absoluteLuminanceDifference(reference.mean, test)));
-  outputs.difference_png = relativePath(run_dir, difference_png);
-  if (flip) {
-    const fs::path flip_png = job_dir / "flip.png";
-    image::writePng(flip_png, metrics::errorMapForDisplay("flip", *flip));
-    outputs.flip_png = relativePath(run_dir, flip_png);
-  }
-}
-
 void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env,
-                                 const image::Image& test, const image::Image* disagreement,
-                                 results::JobResult& result) {
+                                 const JobDirectory& files, const image::Image& test,
+                                 const image::Image* disagreement, results::JobResult& result) {
   if (referenceClass(p) == scene::PathClass{}) return;  // the class reference is the full one
   results::ReferenceUse use;
   const ref::StoredReference full = obtainReference(p, env, scene::PathClass{}, &use);
   result.full_reference = use;
-  result.outputs.full_reference_exr = copyReferenceExr(env.run_dir, full);
+  result.outputs.full_reference_exr = copyReferenceExr(files, full);
   result.metrics_full = measure(full.mean, test, p.job->settings.metrics, disagreement).values;
 }
 
 // The reference alone: the stored reference, and when the case lists checkpoints an independent
 // render measured against it at each, for the convergence plot.
-void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const fs::path& job_dir,
+void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const JobDirectory& files,
                      results::JobResult& result) {
   const ref::StoredReference reference =
       obtainReference(p, env, referenceClass(p), &result.reference);
@@ -285,14 +177,13 @@ void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const fs::
     result.metrics = last_report.values;
 
     settings.spp = static_cast<std::uint32_t>(checkpoints.back());
-    const fs::path exr = job_dir / "image.exr";
     image::Metadata metadata = ref::referenceMetadata(p.scene, settings);
     ref::addRunMetadata(metadata, final_render);
-    const fs::path png = ref::writeReferenceOutputs(exr, final_render, metadata);
-    result.outputs.image = relativePath(env.run_dir, exr);
-    result.outputs.image_png = relativePath(env.run_dir, png);
+    const fs::path png = ref::writeReferenceOutputs(files.image_exr, final_render, metadata);
+    result.outputs.image = files.relative(files.image_exr);
+    result.outputs.image_png = files.relative(png);
   }
-  writeComparisonImages(env.run_dir, job_dir, reference, last_mean, last_report, result.outputs);
+  writeComparisonImages(files, reference, last_mean, last_report, result.outputs);
 }
 
 rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnvironment& env) {
@@ -329,19 +220,19 @@ results::Convergence techniqueConvergence(const PreparedJob& p,
 // Pixels whose primary hit the rasteriser and the pixel-centre reference disagree on: counted
 // and written as a mask (white), not hidden (reference/primary_agreement.h).
 // Returns the mask (one channel, 1 where they disagree).
-image::Image recordPrimaryAgreement(const PreparedJob& p, const JobEnvironment& env,
-                                    const fs::path& job_dir, const rt::PrimarySurfaces& primary,
+image::Image recordPrimaryAgreement(const PreparedJob& p, const JobDirectory& files,
+                                    const rt::PrimarySurfaces& primary,
                                     results::JobResult& result) {
   const ref::PrimaryAgreement agreement =
       ref::comparePrimarySurfaces(p.scene, primary.position, primary.normal);
   result.disagreement_pixels = static_cast<long long>(agreement.disagreements);
-  const fs::path png = job_dir / "disagreement.png";
-  image::writePng(png, agreement.mask);  // one channel: shown grey, so white where they disagree
-  result.outputs.disagreement_png = relativePath(env.run_dir, png);
+  // One channel: shown grey, so white where they disagree.
+  image::writePng(files.disagreement_png, agreement.mask);
+  result.outputs.disagreement_png = files.relative(files.disagreement_png);
   return agreement.mask;
 }
 
-void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::path& job_dir,
+void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const JobDirectory& files,
                      results::JobResult& result, rt::gl::GlIdentity* gl) {
   const rt::TechniqueRunSettings settings = techniqueSettings(p, env);
   if (env.note)
@@ -360,30 +251,29 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const fs::
   for (const rt::TechniqueStatistic& statistic : run.statistics)
     result.statistics.emplace_back(statistic.name, statistic.value);
 
-  const fs::path exr = job_dir / "image.exr";
   image::Metadata metadata = rt::techniqueOutputMetadata(
       p.scene, *p.technique, *p.parameters, settings, run, result.timings->root().reported.median);
-  const rt::TechniqueOutputFiles files = rt::writeTechniqueOutputs(exr, run, metadata);
-  result.outputs.image = relativePath(env.run_dir, exr);
-  result.outputs.image_png = relativePath(env.run_dir, files.png);
-  for (const rt::AuxiliaryImageFiles& aux : files.auxiliary)
-    result.auxiliary_images.push_back({aux.name, aux.description,
-                                       relativePath(env.run_dir, aux.exr),
-                                       relativePath(env.run_dir, aux.png)});
-  const fs::path timings = job_dir / "timings.json";
-  image::writeTextFile(timings, results::passTimingsToJson(*result.timings).dump(2) + "\n");
-  result.outputs.timings_json = relativePath(env.run_dir, timings);
+  const rt::TechniqueOutputFiles written =
+      rt::writeTechniqueOutputs(files.image_exr, run, metadata);
+  result.outputs.image = files.relative(files.image_exr);
+  result.outputs.image_png = files.relative(written.png);
+  for (const rt::AuxiliaryImageFiles& aux : written.auxiliary)
+    result.auxiliary_images.push_back(
+        {aux.name, aux.description, files.relative(aux.exr), files.relative(aux.png)});
+  image::writeTextFile(files.timings_json,
+                       results::passTimingsToJson(*result.timings).dump(2) + "\n");
+  result.outputs.timings_json = files.relative(files.timings_json);
 
   const ref::StoredReference reference =
       obtainReference(p, env, referenceClass(p), &result.reference);
   std::optional<image::Image> disagreement;
-  if (run.primary) disagreement = recordPrimaryAgreement(p, env, job_dir, *run.primary, result);
+  if (run.primary) disagreement = recordPrimaryAgreement(p, files, *run.primary, result);
   const image::Image* mask = disagreement ? &*disagreement : nullptr;
   const metrics::MetricReport report =
       measure(reference.mean, run.image, p.job->settings.metrics, mask);
   result.metrics = report.values;
-  writeComparisonImages(env.run_dir, job_dir, reference, run.image, report, result.outputs);
-  measureAgainstFullReference(p, env, run.image, mask, result);
+  writeComparisonImages(files, reference, run.image, report, result.outputs);
+  measureAgainstFullReference(p, env, files, run.image, mask, result);
   if (!p.job->settings.checkpoints.empty())
     result.convergence = techniqueConvergence(p, run.captures, reference.mean, mask);
 }
@@ -467,14 +357,14 @@ results::JobResult describeJob(const PreparedJob& p) {
 }
 
 results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
-                              const fs::path& job_dir, rt::gl::GlIdentity* gl) {
+                              const JobDirectory& files, rt::gl::GlIdentity* gl) {
   const Clock::time_point start = Clock::now();
   const Job& job = *p.job;
   results::JobResult result = describeJob(p);
   if (job.isReference())
-    runReferenceJob(p, env, job_dir, result);
+    runReferenceJob(p, env, files, result);
   else
-    runTechniqueJob(p, env, job_dir, result, gl);
+    runTechniqueJob(p, env, files, result, gl);
   result.seconds = secondsSince(start);
   return result;
 }
@@ -511,17 +401,6 @@ metrics::PassTimings repeatTechniqueJob(const PreparedJob& p, const JobEnvironme
   settings.capture_after.clear();  // the convergence series is the first run's
   return metrics::summarizeProfile(
       rt::runTechnique(p.scene, *p.technique, *p.parameters, settings).profile);
-}
-
-void recordRepeats(results::JobResult& result, std::vector<metrics::PassTimings> repeats) {
-  if (repeats.size() < 2) return;
-  std::vector<std::size_t> order(repeats.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return repeats[a].root().reported.median < repeats[b].root().reported.median;
-  });
-  result.timings = repeats[order[(order.size() - 1) / 2]];
-  result.repeats = std::move(repeats);
 }
 
 }  // namespace gib::suites

@@ -1,5 +1,6 @@
 // One job of a run: render (or fetch from the reference store), measure against the reference of
-// the job's path class and against the full reference, time, and write the job's images.
+// the job's path class and against the full reference, time, and write the job's images (into
+// the files suites/job_directory.h names; the pictures for the report: suites/job_images.h).
 #pragma once
 
 #include "common/parameters.h"
@@ -9,9 +10,9 @@
 #include "reference/reference_store.h"
 #include "results/results.h"
 #include "scene/scene.h"
+#include "suites/job_directory.h"
 #include "suites/job_expansion.h"
 
-#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -38,7 +39,6 @@ PreparedJob prepareJob(const Job& job);
 
 struct JobEnvironment {
   ref::ReferenceStore* store = nullptr;
-  std::filesystem::path run_dir;  // output paths are recorded relative to it
   rt::gl::ContextOptions gl;
   bool progress = false;  // progress bars on a terminal
   // Called with short notes of what the job is doing ("reference: rendering 128x128 at 1024 spp").
@@ -49,11 +49,11 @@ struct JobEnvironment {
 // runs: the start of its result, and all of a failed job's.
 results::JobResult describeJob(const PreparedJob& job);
 
-// Runs the job and writes its files into `job_dir`. The GL identity of a technique job is
-// returned through `gl` when given.
+// Runs the job and writes its files into `files` (an empty job directory; the results record
+// their paths relative to its run directory). The GL identity of a technique job is returned
+// through `gl` when given.
 results::JobResult executeJob(const PreparedJob& job, const JobEnvironment& environment,
-                              const std::filesystem::path& job_dir,
-                              rt::gl::GlIdentity* gl = nullptr);
+                              const JobDirectory& files, rt::gl::GlIdentity* gl = nullptr);
 
 // The store specs of the references the job is measured against: its class's, then the full
 // one when that differs (a reference job: its class's alone).
@@ -66,9 +66,5 @@ void obtainJobReferences(const PreparedJob& job, const JobEnvironment& environme
 // One more run of a technique job (`repeats` > 1): a fresh GL context and the job's frames, its
 // timings alone (the images and metrics of the first run stand: renders are deterministic).
 metrics::PassTimings repeatTechniqueJob(const PreparedJob& job, const JobEnvironment& environment);
-
-// Puts every repeat's timings into `result` (JobResult::repeats, in run order) and makes
-// `result.timings` the repeat of the median frame time (the lower one of an even count).
-void recordRepeats(results::JobResult& result, std::vector<metrics::PassTimings> repeats);
 
 }  // namespace gib::suites

@@ -125,13 +125,13 @@ RunDirectory RunDirectory::open(const fs::path& dir, const RunState& fresh) {
   return run;
 }
 
-fs::path RunDirectory::jobDirectory(const Job& job) const {
-  return dir_ / "jobs" / job.slug;
+JobDirectory RunDirectory::jobDirectory(const Job& job) const {
+  return JobDirectory(dir_, job.slug);
 }
 
 std::optional<results::JobResult> RunDirectory::finishedJob(const Job& job,
                                                             const std::string& job_hash) const {
-  const fs::path file = jobDirectory(job) / "result.json";
+  const fs::path file = jobDirectory(job).result_json;
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return std::nullopt;
   try {
@@ -143,32 +143,33 @@ std::optional<results::JobResult> RunDirectory::finishedJob(const Job& job,
   return std::nullopt;
 }
 
-fs::path RunDirectory::prepareJob(const Job& job) const {
-  const fs::path dir = jobDirectory(job);
+JobDirectory RunDirectory::prepareJob(const Job& job) const {
+  const JobDirectory files = jobDirectory(job);
   std::error_code ec;
-  fs::remove_all(dir, ec);
+  fs::remove_all(files.dir, ec);
   if (ec)
     throw InputError(
-        fmt::format("cannot clear '{}' ({}); remove it by hand", dir.string(), ec.message()));
-  createDirectory(dir);
-  return dir;
+        fmt::format("cannot clear '{}' ({}); remove it by hand", files.dir.string(), ec.message()));
+  createDirectory(files.dir);
+  return files;
 }
 
 void RunDirectory::recordJob(const Job& job, const results::JobResult& result) const {
-  results::writeJobFile(jobDirectory(job) / "result.json", result);
+  results::writeJobFile(jobDirectory(job).result_json, result);
 }
 
 void RunDirectory::recordFailure(const Job& job, const std::string& job_hash,
                                  const std::string& error) const {
+  const JobDirectory files = jobDirectory(job);
   std::error_code ec;
-  fs::create_directories(jobDirectory(job), ec);
+  fs::create_directories(files.dir, ec);
   const nlohmann::ordered_json json = {{"id", job.id}, {"job_hash", job_hash}, {"error", error}};
-  image::writeTextFile(jobDirectory(job) / "failed.json", json.dump(2) + "\n");
+  image::writeTextFile(files.failed_json, json.dump(2) + "\n");
 }
 
 std::optional<std::string> RunDirectory::failure(const Job& job,
                                                  const std::string& job_hash) const {
-  std::ifstream in(jobDirectory(job) / "failed.json");
+  std::ifstream in(jobDirectory(job).failed_json);
   if (!in) return std::nullopt;
   const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
   if (!json.is_object() || json.value("id", "") != job.id ||

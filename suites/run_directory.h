@@ -2,9 +2,10 @@
 //
 //   DIR/run-state.json          the run's id, suite (name and file), job selection and start,
 //                               written when the run starts
-//   DIR/jobs/<slug>/            one directory per job: images, timings, and last of all
-//   DIR/jobs/<slug>/result.json   the job's result, written atomically: its presence means done
-//   DIR/jobs/<slug>/failed.json   or why it failed (shards and Slurm tasks, which go on)
+//   DIR/jobs/<slug>/            one directory per job: images, timings, and last of all its
+//                               result.json (written atomically: its presence means done), or
+//                               failed.json (shards and Slurm tasks, which go on); the files of
+//                               the jobs are named in suites/job_directory.h
 //   DIR/slurm/                  `gibench run --slurm`: task lists, scripts, logs
 //   DIR/results.json, results.csv, index.html, report/   written when every job is done
 //
@@ -17,6 +18,7 @@
 #pragma once
 
 #include "results/results.h"
+#include "suites/job_directory.h"
 #include "suites/job_expansion.h"
 
 #include <filesystem>
@@ -50,11 +52,11 @@ class RunDirectory {
   const RunState& state() const { return state_; }
   bool resumed() const { return resumed_; }
 
-  std::filesystem::path jobDirectory(const Job& job) const;
+  JobDirectory jobDirectory(const Job& job) const;
   // The job's recorded result when it finished with this `job_hash`.
   std::optional<results::JobResult> finishedJob(const Job& job, const std::string& job_hash) const;
   // An empty directory for the job (the debris of an earlier attempt removed).
-  std::filesystem::path prepareJob(const Job& job) const;
+  JobDirectory prepareJob(const Job& job) const;
   // Records the finished job (atomically: last of its files).
   void recordJob(const Job& job, const results::JobResult& result) const;
   // Records why the job failed (a shard or Slurm task goes on with its other jobs); a resume runs

@@ -1,7 +1,6 @@
 #include "suites/suite_runner.h"
 
 #include "common/content_hash.h"
-#include "common/environment_error.h"
 #include "common/input_error.h"
 #include "image/exr_io.h"
 #include "image/output_files.h"
@@ -11,6 +10,8 @@
 #include "results/results_csv.h"
 #include "results/results_json.h"
 #include "suites/job_execution.h"
+#include "suites/job_scheduler.h"
+#include "suites/primary_metric.h"
 #include "suites/run_conditions.h"
 #include "suites/run_directory.h"
 #include "suites/run_environment.h"
@@ -21,7 +22,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <fstream>
 #include <iterator>
@@ -29,7 +29,6 @@
 #include <optional>
 #include <random>
 #include <sstream>
-#include <thread>
 
 namespace gib::suites {
 
@@ -105,231 +104,83 @@ std::optional<rt::gl::GlIdentity> glOfRecordedJob(const fs::path& run_dir,
   }
 }
 
-std::string primaryMetric(const std::vector<results::JobResult>& jobs) {
-  std::string first;
-  for (const results::JobResult& job : jobs)
-    for (const auto& [name, value] : job.metrics) {
-      if (name == "relmse") return name;
-      if (first.empty()) first = name;
-    }
-  return first;
-}
-
-std::string summaryOf(const results::JobResult& job, const std::string& metric) {
-  std::string text = fmt::format("done in {:.1f} s", job.seconds);
-  if (const std::optional<double> value = job.metric(metric))
-    text += fmt::format(", {} {:.4g}", metric, *value);
-  if (const std::optional<double> frame = job.frameMedianMs())
-    text += fmt::format(", frame {:.2f} ms", *frame);
-  return text;
-}
-
-// A job this machine could not run (gib::EnvironmentError: a GL driver that rejects a shader, GPU
-// memory that runs out) says nothing about the other jobs: it is recorded as failed and the run
-// goes on. Bad input and bugs stop the run.
-bool isEnvironmentFailure(const std::exception_ptr& error) {
-  try {
-    std::rethrow_exception(error);
-  } catch (const EnvironmentError&) {
-    return true;
-  } catch (...) {
-    return false;
-  }
-}
-
-// Runs the pending jobs on `workers` threads; the first failure stops the hand-out of new tasks
-// and is rethrown once the running ones have ended (the finished jobs' results are kept for a
-// resume). A job of `repeats` > 1 is several tasks: its first run (images, metrics, timings) and
-// each further timed run. Repeats are interleaved across jobs (every job's first run, then every
-// job's second, …), so that a drift of the machine spreads over all jobs rather than one; a job is
-// recorded when its last task ends.
-class JobScheduler {
+// A run's jobs as the scheduler runs them: each executed into its directory of the run
+// (suites/job_execution.h) and recorded there, a failure recorded beside it.
+class RunJobs {
  public:
-  JobScheduler(const std::vector<PreparedJob>& jobs, const RunDirectory& dir,
-               const RunOptions& options, ref::ReferenceStore& store,
-               std::vector<std::optional<results::JobResult>>& results)
-      : jobs_(jobs),
-        dir_(dir),
-        options_(options),
-        store_(store),
-        results_(results),
-        states_(jobs.size()) {}
+  RunJobs(const std::vector<PreparedJob>& jobs, const RunDirectory& dir, const RunOptions& options,
+          ref::ReferenceStore& store)
+      : jobs_(jobs), dir_(dir), options_(options), store_(store) {}
 
-  void run(const std::vector<std::size_t>& pending) {
-    std::vector<Task> tasks;
-    int most = 1;
-    for (std::size_t index : pending) {
-      states_[index].timings.resize(std::size_t(repeatsOf(index)));
-      states_[index].remaining = repeatsOf(index);
-      most = std::max(most, repeatsOf(index));
-    }
-    for (int repeat = 0; repeat < most; ++repeat)
-      for (std::size_t index : pending)
-        if (repeat < repeatsOf(index)) tasks.push_back({index, repeat});
-
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto worker = [&] {
-      for (std::size_t k; (k = next.fetch_add(1)) < tasks.size();) {
-        {
-          std::lock_guard lock(failure_mutex);
-          if (failure) return;
-        }
-        try {
-          runTask(tasks[k]);
-        } catch (...) {
-          if (options_.part || isEnvironmentFailure(std::current_exception())) {
-            recordFailure(tasks[k].job, std::current_exception());
-            continue;
-          }
-          std::lock_guard lock(failure_mutex);
-          if (!failure) failure = std::current_exception();
-          return;
-        }
-      }
-    };
-    const int count = std::max(1, std::min<int>(options_.parallel_jobs, int(tasks.size())));
-    std::vector<std::thread> threads;
-    for (int i = 1; i < count; ++i) threads.emplace_back(worker);
-    worker();
-    for (std::thread& thread : threads) thread.join();
-    if (failure) std::rethrow_exception(failure);
+  // A technique job is timed `repeats` times, a reference job once.
+  std::vector<ScheduledJob> schedule() const {
+    std::vector<ScheduledJob> scheduled;
+    for (const PreparedJob& job : jobs_)
+      scheduled.push_back({job.job->id, job.technique ? job.job->settings.repeats : 1});
+    return scheduled;
   }
 
+  JobWork work() {
+    JobWork work;
+    work.first_run = [this](std::size_t index, const JobNote& note) {
+      return firstRun(index, note);
+    };
+    work.repeat_run = [this](std::size_t index, const JobNote& note) {
+      return repeatTechniqueJob(jobs_[index], environment(note));
+    };
+    work.record = [this](std::size_t index, const results::JobResult& result) {
+      record(index, result);
+    };
+    work.record_failure = [this](std::size_t index, const std::string& error) {
+      dir_.recordFailure(*jobs_[index].job, jobs_[index].hash, error);
+    };
+    return work;
+  }
+
+  // The GL implementation of the first technique job that ran, if any.
   std::optional<rt::gl::GlIdentity> gl() const { return gl_; }
-  std::size_t failed() const { return failed_; }
 
  private:
-  struct Task {
-    std::size_t job;
-    int repeat;  // 0: the full first run
-  };
-  // A job's progress over its tasks.
-  struct JobState {
-    std::optional<results::JobResult> result;                  // from the first run
-    std::vector<std::optional<metrics::PassTimings>> timings;  // of each repeat
-    int remaining = 0;
-    bool failed = false;  // a part's job that threw: its other tasks are skipped
-    ConditionsSample before;
-    fs::path dir;
-  };
-
-  int repeatsOf(std::size_t index) const {
-    return jobs_[index].technique ? jobs_[index].job->settings.repeats : 1;
-  }
-
-  void log(const std::string& line) {
-    std::lock_guard lock(log_mutex_);
-    fmt::print(options_.log, "{}\n", line);
-    std::fflush(options_.log);
-  }
-
-  JobEnvironment environment(const std::string& prefix) {
+  JobEnvironment environment(const JobNote& note) const {
     JobEnvironment env;
     env.store = &store_;
-    env.run_dir = dir_.path();
     env.gl.device = options_.gl_device;
     env.gl.debug = rt::gl::debugOutputByDefault();
     env.progress = options_.progress && options_.parallel_jobs == 1;
-    env.note = [this, prefix](const std::string& note) { log(prefix + ": " + note); };
+    env.note = note;
     return env;
   }
 
-  void runTask(const Task& task) {
-    const PreparedJob& job = jobs_[task.job];
-    const int repeats = repeatsOf(task.job);
-    std::string prefix = fmt::format("[{}/{}] {}", task.job + 1, jobs_.size(), job.job->id);
-    if (repeats > 1) prefix += fmt::format(" (run {}/{})", task.repeat + 1, repeats);
-    JobState& state = states_[task.job];
-    {
-      std::lock_guard lock(state_mutex_);
-      if (state.failed) return;
+  results::JobResult firstRun(std::size_t index, const JobNote& note) {
+    const PreparedJob& job = jobs_[index];
+    rt::gl::GlIdentity gl;
+    results::JobExecution execution = describeJobExecution();  // at the start: its queue wait
+    const JobDirectory files = dir_.prepareJob(*job.job);
+    results::JobResult result = executeJob(job, environment(note), files, &gl);
+    if (job.technique) execution.gl_renderer = gl.renderer;
+    result.execution = std::move(execution);
+    if (job.technique) {
+      std::lock_guard lock(gl_mutex_);
+      if (!gl_) gl_ = gl;
     }
-    const JobEnvironment env = environment(prefix);
-    if (task.repeat == 0) {
-      {
-        std::lock_guard lock(state_mutex_);
-        state.before = sampleConditions();
-      }
-      log(prefix + ": started");
-      rt::gl::GlIdentity gl;
-      results::JobExecution execution = describeJobExecution();  // at the start: its queue wait
-      const fs::path job_dir = dir_.prepareJob(*job.job);
-      results::JobResult result = executeJob(job, env, job_dir, &gl);
-      if (job.technique) execution.gl_renderer = gl.renderer;
-      result.execution = std::move(execution);
-      std::lock_guard lock(state_mutex_);
-      if (job.technique && !gl_) gl_ = gl;
-      if (result.timings) state.timings[0] = result.timings;
-      state.result = std::move(result);
-      state.dir = job_dir;
-    } else {
-      log(prefix + ": timing again");
-      metrics::PassTimings timings = repeatTechniqueJob(job, env);
-      std::lock_guard lock(state_mutex_);
-      state.timings[std::size_t(task.repeat)] = std::move(timings);
-    }
-    bool last = false;
-    {
-      std::lock_guard lock(state_mutex_);
-      last = --state.remaining == 0 && !state.failed;
-    }
-    if (last) finish(task.job);
+    return result;
   }
 
-  // A part's job that threw, or any run's job that the machine could not run: recorded as failed
-  // once (a resume runs it again), its remaining tasks skipped, the other jobs go on.
-  void recordFailure(std::size_t index, std::exception_ptr error) {
-    std::string message = "unknown error";
-    try {
-      std::rethrow_exception(error);
-    } catch (const std::exception& e) {
-      message = e.what();
-    } catch (...) {
-    }
-    {
-      std::lock_guard lock(state_mutex_);
-      if (states_[index].failed) return;
-      states_[index].failed = true;
-      ++failed_;
-    }
-    const PreparedJob& job = jobs_[index];
-    dir_.recordFailure(*job.job, job.hash, message);
-    log(fmt::format("[{}/{}] {}: failed: {}", index + 1, jobs_.size(), job.job->id, message));
-  }
-
-  // Every task of the job has ended: its repeats and conditions join the first run's result,
-  // which is recorded (the resume point) and logged.
-  void finish(std::size_t index) {
-    const PreparedJob& job = jobs_[index];
-    JobState& state = states_[index];
-    results::JobResult result = std::move(*state.result);
-    if (state.timings.size() > 1) {
-      std::vector<metrics::PassTimings> repeats;
-      for (std::optional<metrics::PassTimings>& timings : state.timings)
-        repeats.push_back(std::move(*timings));
-      recordRepeats(result, std::move(repeats));
-      image::writeTextFile(dir_.path() / result.outputs.timings_json,
+  void record(std::size_t index, const results::JobResult& result) {
+    const Job& job = *jobs_[index].job;
+    // The repeat of the median frame time stands for the job: its timings replace the first run's.
+    if (!result.repeats.empty())
+      image::writeTextFile(dir_.jobDirectory(job).timings_json,
                            results::passTimingsToJson(*result.timings).dump(2) + "\n");
-    }
-    result.conditions = conditionsBetween(state.before, sampleConditions());
-    dir_.recordJob(*job.job, result);
-    log(fmt::format("[{}/{}] {}: {}", index + 1, jobs_.size(), job.job->id,
-                    summaryOf(result, primaryMetric({result}))));
-    std::lock_guard lock(state_mutex_);
-    results_[index] = std::move(result);
+    dir_.recordJob(job, result);
   }
 
   const std::vector<PreparedJob>& jobs_;
   const RunDirectory& dir_;
   const RunOptions& options_;
   ref::ReferenceStore& store_;
-  std::vector<std::optional<results::JobResult>>& results_;
-  std::vector<JobState> states_;
-  std::mutex log_mutex_, state_mutex_;
+  std::mutex gl_mutex_;
   std::optional<rt::gl::GlIdentity> gl_;
-  std::size_t failed_ = 0;
 };
 
 }  // namespace
@@ -485,8 +336,11 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
   outcome.ran = pending.size();
 
   ref::ReferenceStore store(options.store_root);
-  JobScheduler scheduler(prepared, dir, options, store, results);
-  scheduler.run(pending);
+  RunJobs run_jobs(prepared, dir, options, store);
+  JobScheduler scheduler(
+      run_jobs.schedule(), run_jobs.work(),
+      {.parallel_jobs = options.parallel_jobs, .part = options.part, .log = options.log});
+  scheduler.run(pending, results);
 
   if (options.part) {
     outcome.failed = scheduler.failed();
@@ -505,7 +359,7 @@ RunOutcome runSuite(const Suite& suite, const RunOptions& options) {
     failed.failure = dir.failure(jobs[i], prepared[i].hash).value_or("no result");
     finished.push_back(std::move(failed));
   }
-  return assembleRun(suite, options, dir, std::move(finished), scheduler.gl(), before,
+  return assembleRun(suite, options, dir, std::move(finished), run_jobs.gl(), before,
                      std::move(outcome));
 }
 
@@ -562,8 +416,8 @@ RunOutcome mergeRuns(const std::vector<fs::path>& dirs, const RunOptions& option
     for (const RunDirectory& theirs : others) {
       if (result) break;
       if (!theirs.finishedJob(jobs[i], prepared[i].hash)) continue;
-      const fs::path target = dir.prepareJob(jobs[i]);
-      fs::copy(theirs.jobDirectory(jobs[i]), target, fs::copy_options::recursive);
+      const fs::path target = dir.prepareJob(jobs[i]).dir;
+      fs::copy(theirs.jobDirectory(jobs[i]).dir, target, fs::copy_options::recursive);
       result = dir.finishedJob(jobs[i], prepared[i].hash);
       // The reference's viewer data lives outside the job's folder (one file per reference).
       if (result && !result->outputs.reference_viewer_data.empty()) {
