@@ -51,6 +51,12 @@ std::string defaultPathClass(const rt::TechniqueInfo& info) {
 
 // What the technique's README (realtime/techniques/<name>/README.md) shows between its
 // "generated" markers: the catalogue's own words, parameter table and declared passes.
+// "participating medium (scenes that have one: cloud), ray caster".
+std::string needsText(const rt::TechniqueInfo& info) {
+  return joinNames(info.needs, ", ",
+                   [](rt::TechniqueNeed need) { return std::string(rt::needName(need)); });
+}
+
 std::string techniqueMarkdown(const rt::TechniqueInfo& info) {
   std::string out = fmt::format(
       "`{}`: {}.\n\nSource: {}. Path class with the defaults: {}.\n\n## Parameters "
@@ -59,6 +65,16 @@ std::string techniqueMarkdown(const rt::TechniqueInfo& info) {
       parameterMarkdownTable(info.parameters));
   for (const rt::DeclaredPass& pass : info.passes.passes())
     out += fmt::format("| `{}` | {} |\n", pass.path, pass.description);
+  if (!info.needs.empty()) out += fmt::format("\n## Needs\n\n{}\n", needsText(info));
+  auto outputs = [&](std::string_view title, std::string_view prefix,
+                     const std::vector<rt::DeclaredOutput>& declared) {
+    if (declared.empty()) return;
+    out += fmt::format("\n## {}\n\n| name | what it shows |\n|---|---|\n", title);
+    for (const rt::DeclaredOutput& output : declared)
+      out += fmt::format("| `{}{}` | {} |\n", prefix, output.name, output.description);
+  };
+  outputs("Auxiliary images (`image = \"aux:<name>\"` in a figure)", "aux:", info.auxiliary_images);
+  outputs("Statistics (quantities of a chart or paper value)", "statistic:", info.statistics);
   return out;
 }
 
@@ -73,13 +89,19 @@ void listTechniques() {
     fmt::print("{:<{}} {}\n", info.name, width, info.description);
     fmt::print("{:<{}}   source: {}\n", "", width, info.source);
     fmt::print("{:<{}}   path class (defaults): {}\n", "", width, defaultPathClass(info));
-    if (info.requires_medium)
-      fmt::print("{:<{}}   scenes: those with a participating medium (cloud)\n", "", width);
+    if (!info.needs.empty()) fmt::print("{:<{}}   needs: {}\n", "", width, needsText(info));
     for (const std::string& line : describeParameters(info.parameters))
       fmt::print("{:<{}}   --set {}\n", "", width, line);
     std::vector<std::string> passes;
     for (const rt::DeclaredPass& pass : info.passes.passes()) passes.push_back(pass.path);
     fmt::print("{:<{}}   passes: {}\n", "", width, joinNames(passes, ", "));
+    auto names = [](const std::vector<rt::DeclaredOutput>& declared) {
+      return joinNames(declared, ", ", [](const rt::DeclaredOutput& o) { return o.name; });
+    };
+    if (!info.auxiliary_images.empty())
+      fmt::print("{:<{}}   auxiliary images: {}\n", "", width, names(info.auxiliary_images));
+    if (!info.statistics.empty())
+      fmt::print("{:<{}}   statistics: {}\n", "", width, names(info.statistics));
   }
 }
 

@@ -1,7 +1,8 @@
 // The machine cannot do what was asked although the input is fine: a GL driver that rejects a
-// shader, GPU memory that runs out, a GL context that cannot be made. The command line prints it
-// as one line and exits with code 1; a suite records the job as failed and runs the others
-// (docs/architecture.md, "Errors").
+// shader, GPU memory that runs out. The command line prints it as one line and exits with code 1;
+// a suite records the job as failed and runs the others (docs/architecture.md, "Errors"). A
+// machine with no EGL or no GL 4.5 context at all is an InputError (exit 2) whose fix is to
+// install Mesa (realtime/gl/context.cpp).
 #pragma once
 
 #include <stdexcept>

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -24,14 +25,21 @@ const char* typeName(ParameterType type) {
       return "x,y,z";
     case ParameterType::kChoice:
       return "choice";
+    case ParameterType::kBoolean:
+      return "boolean";
+    case ParameterType::kIntegerChoice:
+      return "integer choice";
   }
   return "?";
 }
 
+bool hasChoices(ParameterType type) {
+  return type == ParameterType::kChoice || type == ParameterType::kBoolean ||
+         type == ParameterType::kIntegerChoice;
+}
+
 std::string rangeText(const ParameterSpec& spec) {
-  if (spec.type == ParameterType::kChoice) {
-    return joinNames(spec.choices, "|");
-  }
+  if (hasChoices(spec.type)) return joinNames(spec.choices, "|");
   return fmt::format("[{}, {}]{}{}", spec.min, spec.max, spec.unit.empty() ? "" : " ", spec.unit);
 }
 
@@ -47,12 +55,15 @@ bool parseDouble(const std::string& text, double& value) {
 std::string canonicalValue(const ParameterSpec& spec, const std::string& text,
                            std::string_view owner) {
   auto bad = [&](const std::string& why) {
-    const char* article = spec.type == ParameterType::kInteger ? "an" : "a";
+    const std::string_view type = typeName(spec.type);
+    const char* article = type.front() == 'i' ? "an" : "a";  // an integer, a number
     return InputError(fmt::format("{} parameter '{}' = '{}' {}; give {} {} in {}", owner, spec.name,
-                                  text, why, article, typeName(spec.type), rangeText(spec)));
+                                  text, why, article, type, rangeText(spec)));
   };
   switch (spec.type) {
     case ParameterType::kChoice:
+    case ParameterType::kBoolean:
+    case ParameterType::kIntegerChoice:
       for (const std::string& c : spec.choices)
         if (c == text) return text;
       throw bad("is not one of the choices");
@@ -116,26 +127,66 @@ ParameterSpec choiceParameter(std::string name, std::string default_value,
   return spec;
 }
 
-const std::string& ParameterValues::find(std::string_view name) const {
-  for (const auto& [key, value] : values_)
-    if (key == name) return value;
+ParameterSpec booleanParameter(std::string name, bool default_value, std::string doc) {
+  ParameterSpec spec = choiceParameter(std::move(name), default_value ? "true" : "false",
+                                       {"true", "false"}, std::move(doc));
+  spec.type = ParameterType::kBoolean;
+  return spec;
+}
+
+ParameterSpec integerChoiceParameter(std::string name, int default_value, std::vector<int> choices,
+                                     std::string unit, std::string doc) {
+  std::vector<std::string> texts;
+  for (int choice : choices) texts.push_back(std::to_string(choice));
+  ParameterSpec spec = choiceParameter(std::move(name), std::to_string(default_value),
+                                       std::move(texts), std::move(doc));
+  spec.type = ParameterType::kIntegerChoice;
+  spec.unit = std::move(unit);
+  return spec;
+}
+
+ParameterTable joinParameterTables(std::initializer_list<ParameterTable> parts) {
+  ParameterTable table;
+  for (const ParameterTable& part : parts)
+    for (const ParameterSpec& spec : part) {
+      for (const ParameterSpec& earlier : table)
+        if (earlier.name == spec.name)
+          throw std::logic_error(fmt::format("parameter '{}' is declared twice", spec.name));
+      table.push_back(spec);
+    }
+  return table;
+}
+
+const std::string& ParameterValues::find(std::string_view name,
+                                         std::initializer_list<ParameterType> types) const {
+  for (std::size_t i = 0; i < values_.size(); ++i) {
+    if (values_[i].first != name) continue;
+    if (types.size() > 0 && std::find(types.begin(), types.end(), types_[i]) == types.end())
+      throw std::logic_error(
+          fmt::format("parameter '{}' is a {}, read as another type", name, typeName(types_[i])));
+    return values_[i].second;
+  }
   throw std::logic_error(fmt::format("parameter '{}' is not declared", name));
 }
 
 const std::string& ParameterValues::text(std::string_view name) const {
-  return find(name);
+  return find(name, {});
 }
 
 double ParameterValues::number(std::string_view name) const {
-  return std::stod(find(name));
+  return std::stod(find(name, {ParameterType::kNumber, ParameterType::kInteger}));
 }
 
 int ParameterValues::integer(std::string_view name) const {
-  return std::stoi(find(name));
+  return std::stoi(find(name, {ParameterType::kInteger, ParameterType::kIntegerChoice}));
+}
+
+bool ParameterValues::boolean(std::string_view name) const {
+  return find(name, {ParameterType::kBoolean}) == "true";
 }
 
 std::vector<double> ParameterValues::vector3(std::string_view name) const {
-  const std::string& text = find(name);
+  const std::string& text = find(name, {ParameterType::kVector3});
   std::vector<double> v;
   std::size_t start = 0;
   for (int i = 0; i < 3; ++i) {
@@ -179,6 +230,7 @@ ParameterValues parseParameters(const ParameterTable& table,
     values.values_.emplace_back(spec.name, it != given.end()
                                                ? it->second
                                                : canonicalValue(spec, spec.default_value, owner));
+    values.types_.push_back(spec.type);
   }
   return values;
 }
@@ -187,8 +239,9 @@ std::string parameterMarkdownTable(const ParameterTable& table) {
   std::string out = "| parameter | type | default | range | meaning |\n|---|---|---|---|---|\n";
   for (const ParameterSpec& s : table) {
     // fmt rather than "`" + …: GCC 12's -Wrestrict misfires on operator+(const char*, string&&).
-    const std::string range = s.type == ParameterType::kChoice
-                                  ? fmt::format("`{}`", joinNames(s.choices, "`, `"))
+    const std::string range = hasChoices(s.type)
+                                  ? fmt::format("`{}`{}{}", joinNames(s.choices, "`, `"),
+                                                s.unit.empty() ? "" : " ", s.unit)
                                   : rangeText(s);
     out += fmt::format("| `{}` | {} | `{}` | {} | {} |\n", s.name, typeName(s.type),
                        s.default_value, range, s.doc);

@@ -4,6 +4,7 @@
 // mistyped key is an error, never silently ignored.
 #pragma once
 
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <string_view>
@@ -12,14 +13,16 @@
 
 namespace gib {
 
-enum class ParameterType { kInteger, kNumber, kVector3, kChoice };
+// kBoolean is written "true" or "false"; kIntegerChoice is an integer from a list ("64", "128",
+// …: an atlas resolution), read with integer().
+enum class ParameterType { kInteger, kNumber, kVector3, kChoice, kBoolean, kIntegerChoice };
 
 struct ParameterSpec {
   std::string name;
   ParameterType type = ParameterType::kNumber;
   std::string default_value;         // as the user would write it: "2", "0.9", "1,2,3", "pcf"
   double min = 0, max = 0;           // inclusive range of numbers (each component of a vector)
-  std::vector<std::string> choices;  // kChoice only
+  std::vector<std::string> choices;  // kChoice and kIntegerChoice only
   std::string unit;                  // "", "m", "degrees", "W/sr", ...
   std::string doc;                   // one line
 };
@@ -32,12 +35,25 @@ ParameterSpec numericParameter(std::string name, ParameterType type, std::string
 // A choice parameter.
 ParameterSpec choiceParameter(std::string name, std::string default_value,
                               std::vector<std::string> choices, std::string doc);
+// A switch, "true" or "false".
+ParameterSpec booleanParameter(std::string name, bool default_value, std::string doc);
+// An integer from a list (a power-of-two resolution).
+ParameterSpec integerChoiceParameter(std::string name, int default_value, std::vector<int> choices,
+                                     std::string unit, std::string doc);
+
+// The one way to compose a table from parts (a technique's own parameters and a shared block):
+// the parts in order. Throws std::logic_error when two parts declare the same name, a mistake in
+// the code that declares them.
+ParameterTable joinParameterTables(std::initializer_list<ParameterTable> parts);
 
 // Validated values, every declared parameter present (defaults filled in).
+// The typed accessors check the declared type: reading a parameter as another type (integer() of
+// a choice, boolean() of a number) throws std::logic_error, a mistake in the code that reads it.
 class ParameterValues {
  public:
-  double number(std::string_view name) const;
-  int integer(std::string_view name) const;
+  double number(std::string_view name) const;  // kNumber or kInteger
+  int integer(std::string_view name) const;    // kInteger or kIntegerChoice
+  bool boolean(std::string_view name) const;   // kBoolean
   std::vector<double> vector3(std::string_view name) const;
   const std::string& text(std::string_view name) const;  // the canonical text of any parameter
 
@@ -47,8 +63,9 @@ class ParameterValues {
  private:
   friend ParameterValues parseParameters(const ParameterTable&, const std::vector<std::string>&,
                                          std::string_view);
-  const std::string& find(std::string_view name) const;
+  const std::string& find(std::string_view name, std::initializer_list<ParameterType> types) const;
   std::vector<std::pair<std::string, std::string>> values_;
+  std::vector<ParameterType> types_;  // values_[i]'s declared type
 };
 
 // Parses "key=value" assignments against the table. Throws gib::InputError naming `owner`

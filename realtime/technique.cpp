@@ -13,7 +13,12 @@
 #include "realtime/techniques/spherical_billboards/spherical_billboards_technique.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
 
+#include "scene/scene.h"
+
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
 
 namespace gib::rt {
 
@@ -29,6 +34,87 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        sphericalBillboardsTechniqueInfo(),
                                                        illuminationNetworkTechniqueInfo()};
   return catalogue;
+}
+
+std::string_view needName(TechniqueNeed need) {
+  switch (need) {
+    case TechniqueNeed::kRayCaster:
+      return "ray caster";
+    case TechniqueNeed::kMedium:
+      return "participating medium";
+    case TechniqueNeed::kSpecularMaterials:
+      return "specular materials";
+    case TechniqueNeed::kEnvironmentLight:
+      return "environment light";
+  }
+  return "?";
+}
+
+const DeclaredOutput* findDeclaredOutput(const std::vector<DeclaredOutput>& declared,
+                                         std::string_view name) {
+  constexpr std::string_view kFamily = "<n>";
+  for (const DeclaredOutput& output : declared) {
+    const std::string_view pattern = output.name;
+    if (pattern == name) return &output;
+    if (!pattern.ends_with(kFamily)) continue;
+    const std::string_view prefix = pattern.substr(0, pattern.size() - kFamily.size());
+    if (!name.starts_with(prefix) || name.size() == prefix.size()) continue;
+    const std::string_view number = name.substr(prefix.size());
+    if (number.front() != '0' && std::all_of(number.begin(), number.end(), [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c));
+        }))
+      return &output;
+  }
+  return nullptr;
+}
+
+bool TechniqueInfo::hasNeed(TechniqueNeed need) const {
+  return std::find(needs.begin(), needs.end(), need) != needs.end();
+}
+
+bool needsSceneFeatures(const TechniqueInfo& info) {
+  return std::any_of(info.needs.begin(), info.needs.end(),
+                     [](TechniqueNeed need) { return need != TechniqueNeed::kRayCaster; });
+}
+
+std::optional<std::string> missingNeed(const TechniqueInfo& info, const scene::Scene& scene,
+                                       const TechniqueServices& services) {
+  if (info.hasNeed(TechniqueNeed::kRayCaster) && !services.ray_caster)
+    return fmt::format(
+        "technique '{}' traces rays with the harness's ray caster, which this caller did not "
+        "lend; run it through `gibench render` or `gibench run`",
+        info.name);
+  return missingSceneNeed(info, scene);
+}
+
+std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const scene::Scene& scene) {
+  for (TechniqueNeed need : info.needs) {
+    switch (need) {
+      case TechniqueNeed::kRayCaster:
+        continue;
+      case TechniqueNeed::kMedium:
+        if (!scene.medium.empty()) continue;
+        return fmt::format(
+            "technique '{}' renders a participating medium and scene '{}' has none; use scene "
+            "'cloud' or a scene file with particles",
+            info.name, scene.name);
+      case TechniqueNeed::kSpecularMaterials:
+        if (std::any_of(scene.materials.begin(), scene.materials.end(),
+                        [](const scene::Material& m) { return scene::isIdealSpecular(m.type); }))
+          continue;
+        return fmt::format(
+            "technique '{}' renders ideal mirrors or glass and scene '{}' has no such material; "
+            "give it a scene with one",
+            info.name, scene.name);
+      case TechniqueNeed::kEnvironmentLight:
+        if (scene.sky_radiance != scene::Rgb(0.0f)) continue;
+        return fmt::format(
+            "technique '{}' is lit by an environment and scene '{}' has no sky; give it a scene "
+            "with a sky",
+            info.name, scene.name);
+    }
+  }
+  return std::nullopt;
 }
 
 const TechniqueInfo& findTechnique(std::string_view name) {

@@ -11,9 +11,14 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+namespace gib::scene {
+struct Scene;
+}
 
 namespace gib::rt {
 
@@ -96,6 +101,32 @@ class Technique {
   virtual std::vector<TechniqueStatistic> statistics() const { return {}; }
 };
 
+// What a technique needs besides a GPU scene. The runner checks every need once, before the
+// technique is made, and refuses a job whose scene or caller lacks one with a line naming it; a
+// suite runs a technique only on the scenes that have what it needs.
+enum class TechniqueNeed {
+  kRayCaster,          // the harness's CPU ray caster (TechniqueServices::ray_caster)
+  kMedium,             // a participating medium (the scene's particles)
+  kSpecularMaterials,  // a material that reflects or refracts ideally (scene::isIdealSpecular)
+  kEnvironmentLight,   // light arriving from beyond the scene (a sky)
+};
+
+// "ray caster", "participating medium", …: the need in messages, `gibench list` and the READMEs.
+std::string_view needName(TechniqueNeed need);
+
+// An auxiliary image or a statistic a technique may write, declared before anything runs so that
+// a suite naming one ("aux:atlas", "statistic:vertices") is checked when it loads, and a technique
+// writing one it did not declare fails its tests. A name ending in "<n>" stands for a family
+// numbered from 1: "indirect-<n>" declares indirect-1, indirect-2, ….
+struct DeclaredOutput {
+  std::string name;
+  std::string description;  // one line, for `gibench list techniques` and the README
+};
+
+// The declared output `name` is an instance of, or nullptr.
+const DeclaredOutput* findDeclaredOutput(const std::vector<DeclaredOutput>& declared,
+                                         std::string_view name);
+
 struct TechniqueInfo {
   std::string name;
   std::string description;  // one line
@@ -104,11 +135,25 @@ struct TechniqueInfo {
   // Every pass its frames and iterations may time, whatever the parameters (a variance shadow
   // map's filter, a GPU selection's pyramid): the runner refuses a profile with any other.
   PassDeclarations passes;
-  // Renders a participating medium and refuses scenes without one (the cloud's techniques): the
-  // nightly suite covers it on the scenes that have particles.
-  bool requires_medium = false;
+  // Every image auxiliaryImages() and every statistic statistics() may return, whatever the
+  // parameters; the runner refuses any other.
+  std::vector<DeclaredOutput> auxiliary_images;
+  std::vector<DeclaredOutput> statistics;
+  std::vector<TechniqueNeed> needs;
   std::function<std::unique_ptr<Technique>(const ParameterValues&)> create;
+
+  bool hasNeed(TechniqueNeed need) const;
 };
+
+// The first need of `info` that the scene lacks (a medium, a sky, a specular material), with a
+// line saying why and what to do; empty when it has all. A suite is checked with it when it loads.
+std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const scene::Scene& scene);
+// Whether any need of `info` is a feature of the scene (what missingSceneNeed checks).
+bool needsSceneFeatures(const TechniqueInfo& info);
+// missingSceneNeed, and the services the technique needs (the ray caster): what the runner checks
+// once, before it makes the technique.
+std::optional<std::string> missingNeed(const TechniqueInfo& info, const scene::Scene& scene,
+                                       const TechniqueServices& services);
 
 // Every technique, in catalogue order.
 const std::vector<TechniqueInfo>& techniqueCatalogue();

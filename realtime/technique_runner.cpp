@@ -79,6 +79,19 @@ void checkDeclared(const TechniqueInfo& info, const ProfileRecord& record) {
           info.name, pass.path));
 }
 
+// An image or a statistic the technique does not declare would reach a report that no suite could
+// name and no README lists: a bug in the technique, found by every test that runs it.
+template <typename Output>
+void checkOutputsDeclared(const TechniqueInfo& info, const std::vector<Output>& outputs,
+                          const std::vector<DeclaredOutput>& declared, std::string_view what,
+                          std::string_view field) {
+  for (const Output& output : outputs)
+    if (!findDeclaredOutput(declared, output.name))
+      throw std::logic_error(fmt::format(
+          "technique '{}' wrote the {} '{}', which its TechniqueInfo::{} does not declare",
+          info.name, what, output.name, field));
+}
+
 // One line for the command line and a suite's failure record: a shader's log (several lines)
 // gives its first error; the rest is there for a developer who runs the technique's test.
 std::string oneLineSummary(const std::string& message) {
@@ -97,6 +110,8 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
                                        const ParameterValues& parameters,
                                        const TechniqueRunSettings& settings) {
   checkSettings(settings);
+  if (const std::optional<std::string> missing = missingNeed(info, scene, settings.services))
+    throw InputError(*missing);
   std::unique_ptr<gl::Context> context = gl::Context::create(settings.context);
   TechniqueRunResult result;
   result.gl = context->identity();
@@ -109,6 +124,7 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
     result.prepare_ms = gl::finishedMilliseconds(
         [&] { technique->prepare(*gpu_scene, settings.width, settings.height); });
     result.statistics = technique->statistics();
+    checkOutputsDeclared(info, result.statistics, info.statistics, "statistic", "statistics");
     const bool precise = technique->timedOnCpu() || settings.precise.value_or(result.gl.software);
     RenderTarget target(settings.width, settings.height);
     if (technique->iterative()) iterate(*technique, settings, precise, target, result);
@@ -127,6 +143,8 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
     checkDeclared(info, result.iteration_profile);
     result.image = target.read();
     result.auxiliary = technique->auxiliaryImages();
+    checkOutputsDeclared(info, result.auxiliary, info.auxiliary_images, "auxiliary image",
+                         "auxiliary_images");
     result.path_class = technique->pathClass();
     if (settings.capture_primary_surfaces) {
       GBuffer gbuffer(settings.width, settings.height);

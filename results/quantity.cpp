@@ -157,4 +157,11 @@ std::vector<std::string> quantityPasses(const std::string& quantity) {
   return passes;
 }
 
+std::vector<std::string> quantityStatistics(const std::string& quantity) {
+  std::vector<std::string> statistics;
+  for (const std::string& term : sumTerms(quantity))
+    if (startsWith(term, kStatistic)) statistics.push_back(term.substr(kStatistic.size()));
+  return statistics;
+}
+
 }  // namespace gib::results

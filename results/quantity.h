@@ -40,6 +40,10 @@ std::optional<std::string> quantitySyntaxError(const std::string& quantity);
 // none (a metric, a statistic, a parameter).
 std::vector<std::string> quantityPasses(const std::string& quantity);
 
+// The statistics a well-formed quantity names ("vertices" of "statistic:vertices"), in order; a
+// suite is checked against the techniques' declared statistics when it loads.
+std::vector<std::string> quantityStatistics(const std::string& quantity);
+
 // The job's parameter of that name ("scene.<name>": its scene's), as its canonical text; nullopt
 // when it has none.
 std::optional<std::string> parameterText(const JobResult& job, std::string_view name);

@@ -201,7 +201,7 @@ ParameterTable cloudParameters() {
       numericParameter("lights", ParameterType::kInteger, "2", 1, 4, "",
                        "directional lights: the key, the fill (the default two), light from "
                        "above, a front light"),
-      choiceParameter("sky", "true", {"true", "false"}, "the blue sky around the cloud"),
+      booleanParameter("sky", true, "the blue sky around the cloud"),
       choiceParameter("surface", "none", {"none", "ground", "slab"},
                       "a grey surface the cloud meets: none, a ground plane through its base, or "
                       "a wall through its middle (the book's Fig. 9.8)"),
@@ -245,7 +245,7 @@ Scene makeCloud(const ParameterValues& parameters) {
   front.irradiance = {0.35f, 0.33f, 0.3f};
   const std::vector<DirectionalLight> lights = {key, fill, above, front};
   scene.directional_lights.assign(lights.begin(), lights.begin() + parameters.integer("lights"));
-  if (parameters.text("sky") == "true") scene.sky_radiance = {0.12f, 0.17f, 0.28f};
+  if (parameters.boolean("sky")) scene.sky_radiance = {0.12f, 0.17f, 0.28f};
   addSurface(scene, parameters.text("surface"));
 
   // Step: camera. From the side, a little below the cloud's middle and looking slightly up, with

@@ -47,9 +47,9 @@ void addBlock(Mesh& mesh, const glm::vec3 (&quads)[5][4]) {
 
 ParameterTable cornellParameters() {
   return {
-      choiceParameter("blocks", "true", {"true", "false"},
-                      "the short and the tall block (false: the empty box, whose walls alone "
-                      "make a simpler test scene)"),
+      booleanParameter("blocks", true,
+                       "the short and the tall block (false: the empty box, whose walls alone "
+                       "make a simpler test scene)"),
   };
 }
 
@@ -123,7 +123,7 @@ Scene makeCornellBox(const ParameterValues& parameters) {
                                               {265.0f, 330.0f, 296.0f},
                                               {423.0f, 330.0f, 247.0f},
                                               {423.0f, 0.0f, 247.0f}}};
-  if (parameters.text("blocks") == "true") {
+  if (parameters.boolean("blocks")) {
     addBlock(addMesh(scene, "short_block", white_id), kShortBlock);
     addBlock(addMesh(scene, "tall_block", white_id), kTallBlock);
   }

@@ -10,6 +10,15 @@
 
 namespace gib::scene {
 
+bool isIdealSpecular(MaterialType type) {
+  switch (type) {
+    case MaterialType::kLambert:
+    case MaterialType::kPhong:
+      return false;
+  }
+  return false;
+}
+
 std::size_t Scene::triangleCount() const {
   std::size_t count = 0;
   for (const Mesh& mesh : meshes) count += mesh.triangles.size();

@@ -25,6 +25,10 @@ inline float luminance(const Rgb& c) {
 
 enum class MaterialType { kLambert, kPhong };
 
+// Whether a material type reflects or refracts as a delta distribution (an ideal mirror, glass):
+// what the specular techniques need. Lambert and Phong are not.
+bool isIdealSpecular(MaterialType type);
+
 // Lambert: f = diffuse/π. Phong (normalised modified Phong):
 // f = diffuse/π + specular·(n+2)/(2π)·cosⁿα, α between the mirror direction of ωo and ωi.
 // Energy conservation requires diffuse + specular ≤ 1 per channel (checked by validateScene).

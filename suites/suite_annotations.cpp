@@ -22,15 +22,15 @@ constexpr const char* kQuantityFix =
     "name a metric value (relmse, full:relmse), frame or a pass, iteration or "
     "iteration/<pass>, statistic:<name> or parameter:<name>";
 
-// Every pass `quantity` names must be declared by each technique in `techniques`; a pass named
-// for jobs that have no technique (reference jobs are not timed) is an error too. The passes
-// are an interface of each technique (`gibench list techniques` lists them): a renamed pass must
-// fail here, not leave a figure without its numbers.
+// Every pass and every statistic `quantity` names must be declared by each technique in
+// `techniques`; a pass named for jobs that have no technique (reference jobs are not timed) is an
+// error too. Passes and statistics are an interface of each technique (`gibench list
+// techniques` lists them): a renamed one must fail here, not leave a figure without its numbers.
 // `what` names the quantity's key in messages ("chart.y").
-void checkPassesDeclared(const TomlErrorReporter& errors, const toml::node& node,
-                         std::string_view what, const std::string& quantity,
-                         const std::set<std::string>& techniques,
-                         std::string_view jobs_description) {
+void checkDeclaredByTechniques(const TomlErrorReporter& errors, const toml::node& node,
+                               std::string_view what, const std::string& quantity,
+                               const std::set<std::string>& techniques,
+                               std::string_view jobs_description) {
   for (const std::string& pass : results::quantityPasses(quantity)) {
     if (techniques.empty())
       errors.fail(node,
@@ -49,6 +49,20 @@ void checkPassesDeclared(const TomlErrorReporter& errors, const toml::node& node
                                         [](const rt::DeclaredPass& p) { return p.path; })));
     }
   }
+  for (const std::string& statistic : results::quantityStatistics(quantity))
+    for (const std::string& technique : techniques) {
+      const rt::TechniqueInfo& info = rt::findTechnique(technique);
+      if (rt::findDeclaredOutput(info.statistics, statistic)) continue;
+      errors.fail(node,
+                  fmt::format("{} '{}' names the statistic '{}', which technique '{}' does not "
+                              "declare",
+                              what, quantity, statistic, technique),
+                  info.statistics.empty()
+                      ? std::string("it reports no statistics (`gibench list techniques`)")
+                      : fmt::format("name one of its statistics: {} (`gibench list techniques`)",
+                                    joinNames(info.statistics, ", ",
+                                              [](const rt::DeclaredOutput& s) { return s.name; })));
+    }
 }
 
 // The techniques of the jobs (reference jobs have none).
@@ -171,8 +185,8 @@ std::vector<results::PaperValue> readPaperValues(const TomlTableReader& root,
     if (const std::optional<std::string> error = results::quantitySyntaxError(v.quantity))
       t.errors().fail(quantity, fmt::format("{} '{}' {}", t.path("quantity"), v.quantity, *error),
                       kQuantityFix);
-    checkPassesDeclared(t.errors(), quantity, t.path("quantity"), v.quantity,
-                        techniquesOf({&*found}), fmt::format("job '{}' has", v.job));
+    checkDeclaredByTechniques(t.errors(), quantity, t.path("quantity"), v.quantity,
+                              techniquesOf({&*found}), fmt::format("job '{}' has", v.job));
     v.value = t.number(t.require("value", "12.5"), "value");
     v.source = t.string(t.require("source", "\"Nijasure et al. 2005, Table 1\""), "source");
     if (const toml::node* n = t.find("unit")) v.unit = t.string(*n, "unit");
@@ -209,8 +223,8 @@ std::vector<results::ChartSpec> readCharts(const TomlTableReader& root,
       std::string value = t.string(node, key);
       if (const std::optional<std::string> error = results::quantitySyntaxError(value))
         t.errors().fail(node, fmt::format("{} '{}' {}", t.path(key), value, *error), kQuantityFix);
-      checkPassesDeclared(t.errors(), node, t.path(key), value, techniques,
-                          fmt::format("the jobs '{}' have", c.jobs));
+      checkDeclaredByTechniques(t.errors(), node, t.path(key), value, techniques,
+                                fmt::format("the jobs '{}' have", c.jobs));
       return value;
     };
     c.x = quantity("x", "\"statistic:vertices\"");
@@ -228,8 +242,8 @@ void checkQuantity(const TomlErrorReporter& errors, const toml::node& node, std:
                    const std::string& quantity, const Job& job) {
   if (const std::optional<std::string> error = results::quantitySyntaxError(quantity))
     errors.fail(node, fmt::format("{} '{}' {}", what, quantity, *error), kQuantityFix);
-  checkPassesDeclared(errors, node, what, quantity, techniquesOf({&job}),
-                      fmt::format("job '{}' has", job.id));
+  checkDeclaredByTechniques(errors, node, what, quantity, techniquesOf({&job}),
+                            fmt::format("job '{}' has", job.id));
 }
 
 }  // namespace gib::suites

@@ -1,6 +1,7 @@
 #include "suites/suite_figures.h"
 
 #include "common/join.h"
+#include "realtime/technique.h"
 #include "suites/suite_annotations.h"
 
 #include <fmt/format.h>
@@ -108,6 +109,28 @@ class FigureReader {
     return fmt::format("figure '{}' panel {}", figure_.name, index + 1);
   }
 
+  // An auxiliary image is declared by the job's technique (TechniqueInfo::auxiliary_images), so a
+  // typo fails here rather than leaving an empty panel when the report is written.
+  void checkAuxiliaryDeclared(const toml::node& node, const std::string& panel, const Job& job,
+                              const std::string& image) const {
+    if (job.technique == kReferenceTechnique)
+      errors_.fail(node,
+                   fmt::format("{}: job '{}' is a reference job, which has no auxiliary images",
+                               panel, job.id),
+                   "choose image, or a job of a real-time technique");
+    const rt::TechniqueInfo& info = rt::findTechnique(job.technique);
+    if (rt::findDeclaredOutput(info.auxiliary_images, image)) return;
+    errors_.fail(
+        node,
+        fmt::format("{}: technique '{}' declares no auxiliary image '{}'", panel, job.technique,
+                    image),
+        info.auxiliary_images.empty()
+            ? std::string("it writes none; choose image, reference or difference")
+            : fmt::format("choose one of {} (`gibench list techniques`)",
+                          joinNames(info.auxiliary_images, ", ",
+                                    [](const rt::DeclaredOutput& o) { return "aux:" + o.name; })));
+  }
+
   PanelEntry readPanel(const toml::table& table, std::size_t index) {
     const std::string name = panelName(index);
     const TomlTableReader t(
@@ -133,6 +156,8 @@ class FigureReader {
       errors_.fail(image_node,
                    fmt::format("{}: image '{}' is not a picture of a job", name, panel.image),
                    fmt::format("choose {}", kImageChoices));
+    if (panel.image.starts_with(kAuxiliaryPrefix))
+      checkAuxiliaryDeclared(image_node, name, *job, panel.image.substr(kAuxiliaryPrefix.size()));
     const std::vector<std::string>& metrics = job->settings.metrics;
     if (panel.image == "flip" && std::find(metrics.begin(), metrics.end(), "flip") == metrics.end())
       errors_.fail(

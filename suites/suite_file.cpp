@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -413,6 +414,31 @@ Case readCase(const TomlErrorReporter& errors, const toml::table& table, std::si
   return c;
 }
 
+// A case that pairs a technique with a scene that lacks what it needs (a medium, a sky) fails when
+// the suite loads, at the case's technique, not when its job runs an hour into the night. Scenes
+// are loaded only for techniques with such needs, once per scene and parameters.
+void checkSceneNeeds(const TomlErrorReporter& errors, const std::vector<const toml::table*>& cases,
+                     const Suite& suite, const std::vector<Job>& jobs) {
+  std::set<std::string> checked;
+  for (const Job& job : jobs) {
+    if (job.isReference()) continue;
+    const rt::TechniqueInfo& info = rt::findTechnique(job.technique);
+    if (!needsSceneFeatures(info)) continue;
+    const std::vector<std::string> parameters = assignmentStrings(job.scene_parameters);
+    std::string key = job.technique + '\n' + job.scene.nameOrPath();
+    for (const std::string& p : parameters) key += '\n' + p;
+    if (!checked.insert(key).second) continue;
+    const std::optional<std::string> missing =
+        rt::missingSceneNeed(info, scene::loadScene(job.scene.nameOrPath(), parameters));
+    if (!missing) continue;
+    for (std::size_t i = 0; i < suite.cases.size(); ++i)
+      if (suite.cases[i].name == job.case_name)
+        errors.fail(*cases[i]->get("technique"), fmt::format("job '{}': {}", job.id, *missing),
+                    "or leave the scene out of this case (`gibench list techniques` says what "
+                    "each technique needs)");
+  }
+}
+
 }  // namespace
 
 Suite loadSuiteFile(const std::filesystem::path& path) {
@@ -462,6 +488,7 @@ Suite loadSuiteFile(const std::filesystem::path& path) {
   }
   if (const toml::node* n = root.find("tolerances")) suite.tolerances = readTolerances(root, *n);
   const std::vector<Job> jobs = expandSuite(suite);
+  checkSceneNeeds(errors, cases, suite, jobs);
   suite.paper = readPaperValues(root, jobs);
   suite.charts = readCharts(root, jobs);
   suite.figures = readFigures(root, jobs);

@@ -1,5 +1,7 @@
 #include "realtime/atlas/atlas_lighting.h"
 
+#include "realtime/gl/pipeline_state.h"
+
 namespace gib::rt::atlas {
 
 AtlasLighting::AtlasLighting(const ShadowSettings& settings, const GpuScene& scene,
@@ -20,18 +22,16 @@ void AtlasLighting::add(const GpuScene& scene, std::span<const LightSample> samp
   for (std::span<const LightSample> batch : lightSampleBatches(samples, shadow_maps_.capacity())) {
     const gl::FullScreenPass& light = pass(batch.front().kind);
     shadow_maps_.render(scene, batch, unmeasured_);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_DEPTH_TEST);
     const gl::Program& program = light.program();
     program.use();
     shadow_maps_.bindForLookup(program);
     atlas.bind();
     target.bind();
-    glViewport(0, 0, atlas.resolution(), atlas.resolution());
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    const gl::PipelineScope adding({
+        .blend = gl::kAdditiveBlend,
+        .viewport = gl::PixelRect{0, 0, atlas.resolution(), atlas.resolution()},
+    });
     light.draw();
-    glDisable(GL_BLEND);
   }
 }
 

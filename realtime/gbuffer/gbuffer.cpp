@@ -3,6 +3,7 @@
 #include "realtime/gbuffer/gbuffer_views_shared.h"
 #include "realtime/gl/binding_plan_shared.h"
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 
 #include <fmt/format.h>
@@ -23,6 +24,11 @@ constexpr int kTargets = 3;  // position, normal, albedo
 // What a pixel no triangle covers holds: distance and material −1.
 constexpr float kBackground[4] = {0.0f, 0.0f, 0.0f, -1.0f};
 constexpr float kNoAlbedo[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+
+// The nearest surface wins; both sides of a triangle reflect, so no culling.
+gl::PipelineState drawState(int width, int height) {
+  return {.depth_test = GL_LESS, .viewport = gl::PixelRect{0, 0, width, height}};
+}
 
 }  // namespace
 
@@ -55,7 +61,8 @@ void GBuffer::render(const GpuScene& scene, gl::PassProfiler* profiler) {
   std::optional<gl::PassProfiler::Scope> scope;
   if (profiler) scope.emplace(profiler->pass(kGBufferPass));
 
-  clearAndSetState();
+  const gl::PipelineScope state(drawState(width_, height_));
+  bindAndClear();
   program_.use();
   scene.bindSceneBuffers();
   scene.draw();
@@ -91,7 +98,9 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
   const std::size_t blocks_offset = views_.push(blocks);
   const std::size_t records_offset = views_.push(records);
 
-  clearAndSetState();
+  // The scope's end sets every viewport of the array back to the one it found.
+  const gl::PipelineScope state(drawState(width_, height_));
+  bindAndClear();
   views_program_.use();
   scene.bindSceneBuffers();
   for (std::size_t d = 0; d < draws; ++d) {
@@ -107,24 +116,17 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
                       records_offset + first_record[d] * sizeof(DrawArraysIndirectCommand),
                       first_record[d + 1] - first_record[d]);
   }
-  glViewport(0, 0, width_, height_);  // every viewport of the array back to the whole buffer
 }
 
-void GBuffer::clearAndSetState() const {
+// Binds and clears the buffer; the caller's scope holds the state it is drawn with (drawState),
+// whose write masks let the clears clear every channel and the depth.
+void GBuffer::bindAndClear() const {
   framebuffer_.bind();
-  glViewport(0, 0, width_, height_);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthMask(GL_TRUE);
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, kBackground);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 1, kBackground);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 2, kNoAlbedo);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far_depth);
-  // Each pass sets the state it relies on. Both sides of a triangle reflect, so no culling.
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
 }
 
 void GBuffer::bindTextures() const {

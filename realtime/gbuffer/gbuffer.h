@@ -65,7 +65,7 @@ class GBuffer {
  private:
   int width_, height_;
   gl::Texture position_, normal_, albedo_, depth_;
-  void clearAndSetState() const;
+  void bindAndClear() const;
 
   gl::Framebuffer framebuffer_;
   gl::Program program_;

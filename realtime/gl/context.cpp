@@ -255,6 +255,7 @@ std::unique_ptr<Context> Context::create(ContextOptions options) {
 
   result->debug_errors_ = std::make_shared<std::vector<std::string>>();
   if (options.debug) {
+    // Context-wide and set once, here: no pass's pipeline state (pipeline_state.h).
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(recordDebugMessage, result->debug_errors_.get());

@@ -1,9 +1,11 @@
-// Small RAII owners of GL objects (Filament's habit: an object owns its name, moves, never
-// copies). Direct state access (GL 4.5) throughout, so nothing depends on what is bound.
+// Small RAII owners of GL objects (unique_name.h; programs in program.h). Direct state access
+// (GL 4.5) throughout, so nothing depends on what is bound.
 #pragma once
 
 #include "image/image.h"
 #include "realtime/gl/gl.h"
+#include "realtime/gl/program.h"
+#include "realtime/gl/unique_name.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -11,44 +13,6 @@
 #include <vector>
 
 namespace gib::rt::gl {
-
-// Owns one GL name; `Delete` frees it. Moves leave the source empty (name 0).
-template <void (*Delete)(GLuint)>
-class UniqueName {
- public:
-  UniqueName() = default;
-  explicit UniqueName(GLuint name) : name_(name) {}
-  ~UniqueName() { reset(); }
-  UniqueName(UniqueName&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
-  UniqueName& operator=(UniqueName&& other) noexcept {
-    if (this != &other) {
-      reset();
-      name_ = std::exchange(other.name_, 0);
-    }
-    return *this;
-  }
-  UniqueName(const UniqueName&) = delete;
-  UniqueName& operator=(const UniqueName&) = delete;
-
-  GLuint get() const { return name_; }
-  explicit operator bool() const { return name_ != 0; }
-  void reset() {
-    if (name_) Delete(name_);
-    name_ = 0;
-  }
-
- private:
-  GLuint name_ = 0;
-};
-
-namespace detail {
-void deleteBuffer(GLuint name);
-void deleteTexture(GLuint name);
-void deleteFramebuffer(GLuint name);
-void deleteVertexArray(GLuint name);
-void deleteProgram(GLuint name);
-void deleteQuery(GLuint name);
-}  // namespace detail
 
 // An immutable-size buffer (glNamedBufferStorage); `flags` as for glBufferStorage
 // (GL_DYNAMIC_STORAGE_BIT to allow update()).
@@ -164,19 +128,6 @@ class Query {
 
  private:
   UniqueName<detail::deleteQuery> name_;
-};
-
-// A linked program; see shader_library.h for how programs are built from the embedded GLSL.
-class Program {
- public:
-  Program() = default;
-  explicit Program(GLuint name) : name_(name) {}
-  GLuint id() const { return name_.get(); }
-  void use() const { glUseProgram(id()); }
-  GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
-
- private:
-  UniqueName<detail::deleteProgram> name_;
 };
 
 // `layers` square colour images with a depth array behind one layered framebuffer: a batch of

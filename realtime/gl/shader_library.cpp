@@ -171,9 +171,10 @@ std::string translateInfoLog(std::string_view log, const ExpandedSource& source)
 
 Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view defines,
                      const GlslLookup& lookup) {
-  Program program(glCreateProgram());
+  std::string label;  // the stages' files, which name the program in errors
+  for (const ShaderStage& stage : stages) label += (label.empty() ? "" : ", ") + stage.path;
+  Program program(glCreateProgram(), label);
   std::vector<GLuint> shaders;
-  std::vector<std::string> names;
   auto cleanup = [&] {
     for (GLuint s : shaders) glDeleteShader(s);
   };
@@ -181,7 +182,6 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
     const ExpandedSource source = expandIncludes(stage.path, defines, lookup);
     const GLuint shader = glCreateShader(stage.type);
     shaders.push_back(shader);
-    names.push_back(stage.path);
     const char* text = source.text.c_str();
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
@@ -214,10 +214,8 @@ Program buildProgram(std::initializer_list<ShaderStage> stages, std::string_view
     glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
     std::string log(std::size_t(std::max(length, 1)), '\0');
     glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-    std::string joined;
-    for (const std::string& n : names) joined += (joined.empty() ? "" : ", ") + n;
     while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-    throw ShaderError(fmt::format("program ({}) does not link:\n{}", joined, log));
+    throw ShaderError(fmt::format("program ({}) does not link:\n{}", label, log));
   }
   return program;
 }

@@ -20,9 +20,9 @@ ParameterTable irradianceCacheParameters() {
                        "smallest zone of influence a·R, in pixel footprints at the record"),
       numericParameter("max_zone_pixels", ParameterType::kNumber, "64", 1, 4096, "pixels",
                        "largest zone of influence a·R, in pixel footprints at the record"),
-      choiceParameter("reuse_records", "true", {"true", "false"},
-                      "keep the records across frames (a static scene and camera), or rebuild "
-                      "them every frame"),
+      booleanParameter("reuse_records", true,
+                       "keep the records across frames (a static scene and camera), or rebuild "
+                       "them every frame"),
   };
 }
 

@@ -1,6 +1,8 @@
 #include "realtime/lighting/direct_lighting.h"
 
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
+#include "realtime/technique_parameters.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -37,9 +39,7 @@ ParameterTable directLightingParameters() {
                       "variance shadow map"),
       numericParameter("shadow_map_size", ParameterType::kInteger, "512", 16, 4096, "texels",
                        "shadow map resolution (each cube face for point lights)"),
-      numericParameter("light_samples", ParameterType::kInteger, "16", 1, 4096, "",
-                       "points over the area lights, and directions over the sky, each with its "
-                       "own shadow map"),
+      lightSamplesParameter(),
       numericParameter("pcf_radius", ParameterType::kInteger, "0", 0, 4, "texels",
                        "PCF: (2r+1)² hardware-filtered comparisons; 0 is the book's 2×2 bilinear"),
       numericParameter("normal_offset", ParameterType::kNumber, "1", 0, 16, "texels",
@@ -85,20 +85,16 @@ void DirectLighting::prepare(const GpuScene& scene) {
                          shadow_maps_->defines(LightSampleKind::kDirectional) + shading_defines_);
   shadow_maps_->setLookupConstants(shade_point_.program());
   shadow_maps_->setLookupConstants(shade_directional_.program());
-  const gl::Program& emission = emission_.program();
-  glProgramUniform3fv(emission.id(), emission.uniform("u_sky_radiance"), 1,
-                      glm::value_ptr(scene.scene().sky_radiance));
+  emission_.program().set("u_sky_radiance", scene.scene().sky_radiance);
 }
 
 void DirectLighting::writeEmission(const GpuScene& scene, const GBuffer& gbuffer,
                                    const RenderTarget& target, gl::PassProfiler& profiler) {
   auto pass = profiler.pass(kEmissionPass);
   scene.bindSceneBuffers();
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
   gbuffer.bindTextures();
   target.bind();
-  emission_.draw();
+  emission_.draw();  // in the default state: no depth test, no blending
 }
 
 void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>& views,
@@ -117,13 +113,11 @@ void DirectLighting::addDirect(const GpuScene& scene, const std::vector<LitView>
       program.use();
       view.gbuffer->bindTextures();
       shadow_maps_->bindForLookup(program);
-      glUniform1i(program.uniform("u_normals_face_viewer"), view.normals_face_viewer ? 1 : 0);
-      glDisable(GL_DEPTH_TEST);
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);  // each batch adds its share of the direct light
+      program.set("u_normals_face_viewer", view.normals_face_viewer ? 1 : 0);
+      // Each batch adds its share of the direct light.
+      const gl::PipelineScope adding({.blend = gl::kAdditiveBlend});
       view.target->bind();
       shade.draw();
-      glDisable(GL_BLEND);
     }
     if (after_batch) after_batch(*shadow_maps_);
   }

@@ -3,6 +3,7 @@
 #include "realtime/cube_faces.h"
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/lighting/light_sample_shared.h"
 #include "realtime/lighting/lighting_shared.h"
@@ -248,14 +249,14 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
   Layers& maps = layers(kind);
   {
     auto pass = profiler.pass(kShadowMapPass);
-    glViewport(0, 0, settings_.size, settings_.size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
     // Slope-scaled depth offset: the book's depth bias, scaled by the surface's slope in the map.
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.5f, 2.0f);
+    // What lies behind a point sample's plane is clipped (shadow.vert.glsl).
+    const gl::PipelineScope state({
+        .depth_test = GL_LESS,
+        .polygon_offset = gl::PolygonOffset{1.5f, 2.0f},
+        .clip_distances = 1,
+        .viewport = gl::PixelRect{0, 0, settings_.size, settings_.size},
+    });
     // A layered framebuffer's clear clears every layer: nothing closer than the far plane, or
     // for variance maps moments far beyond any scaled light distance.
     glClearNamedFramebufferfv(maps.framebuffer->id(), GL_DEPTH, 0, &kFarDepth);
@@ -263,11 +264,10 @@ void ShadowMaps::render(const GpuScene& scene, std::span<const LightSample> batc
       glClearNamedFramebufferfv(maps.framebuffer->id(), GL_COLOR, 0, kFarMoments);
     maps.framebuffer->bind();
     maps.depth_program.use();
-    glUniform1f(maps.depth_program.uniform("u_far"), far_);
-    glEnable(GL_CLIP_DISTANCE0);  // behind a point sample's plane (shadow.vert.glsl)
+    // Only a point sample's variance map stores distances, over u_far; the other maps store depth
+    // alone (light_space.glsl, shadow.frag.glsl), and their programs have no u_far.
+    maps.depth_program.setIfPresent("u_far", far_);
     scene.drawRecords(stream_.id(), draws_offset, draws.size());
-    glDisable(GL_CLIP_DISTANCE0);
-    glDisable(GL_POLYGON_OFFSET_FILL);
   }
   if (settings_.filter == ShadowFilter::kVariance) blur(kind, int(faces.size()), profiler);
 }
@@ -292,26 +292,24 @@ void ShadowMaps::blur(LightSampleKind kind, int face_count, gl::PassProfiler& pr
                        GL_RG32F);
     glBindImageTexture(gpu::kImageDestinationUnit, destination[i]->id(), 0, GL_TRUE, 0,
                        GL_WRITE_ONLY, GL_RG32F);
-    glUniform2i(program.uniform("u_step"), steps[i][0], steps[i][1]);
+    program.set("u_step", glm::ivec2(steps[i][0], steps[i][1]));
     gl::dispatchCompute(lines, segments, GLuint(face_count));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
 }
 
 void ShadowMaps::setLookupConstants(const gl::Program& program) const {
-  auto set1f = [&](const char* name, float value) {
-    glProgramUniform1f(program.id(), program.uniform(name), value);
-  };
-  auto set1i = [&](const char* name, int value) {
-    glProgramUniform1i(program.id(), program.uniform(name), value);
-  };
-  set1f("u_near", near_);
-  set1f("u_far", far_);
-  set1i("u_shadow_map_size", settings_.size);
-  set1f("u_ortho_extent", 2.0f * radius_);
-  set1f("u_normal_offset", settings_.normal_offset);
-  set1i("u_pcf_radius", settings_.filter == ShadowFilter::kPcf ? settings_.pcf_radius : 0);
-  set1f("u_min_variance", settings_.min_variance);
+  // What a lookup reads depends on the program's defines (shadow_lookup.glsl): a point sample's
+  // cube maps are compared at depths between u_near and u_far (its variance maps store distances
+  // over u_far alone), a directional map's texels span u_ortho_extent, and only a variance map
+  // has a variance floor. The linker drops the others.
+  program.setIfPresent("u_near", near_);
+  program.setIfPresent("u_far", far_);
+  program.set("u_shadow_map_size", settings_.size);
+  program.setIfPresent("u_ortho_extent", 2.0f * radius_);
+  program.set("u_normal_offset", settings_.normal_offset);
+  program.set("u_pcf_radius", settings_.filter == ShadowFilter::kPcf ? settings_.pcf_radius : 0);
+  program.setIfPresent("u_min_variance", settings_.min_variance);
 }
 
 const gl::Texture& ShadowMaps::lookupMaps() const {
@@ -323,7 +321,7 @@ void ShadowMaps::bindForLookup(const gl::Program& program) const {
   lookupMaps().bind(gpu::kShadowMapUnit);
   stream_.bindRange(GL_UNIFORM_BUFFER, gpu::kLightSamplesBinding, samples_offset_,
                     sizeof(gpu::GpuLightSample) * gpu::kMaxLightBatch);
-  glProgramUniform1i(program.id(), program.uniform("u_light_sample_count"), batch_size_);
+  program.set("u_light_sample_count", batch_size_);
 }
 
 }  // namespace gib::rt

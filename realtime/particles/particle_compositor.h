@@ -8,7 +8,7 @@
 #include "common/parameters.h"
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/objects.h"
-#include "realtime/lighting/direct_lighting.h"
+#include "realtime/lighting/surface_lighting.h"
 #include "realtime/particles/particle_medium.h"
 #include "realtime/pass_declarations.h"
 #include "realtime/technique.h"
@@ -68,10 +68,9 @@ class ParticleCompositor {
 
  private:
   BillboardSettings billboard_;
-  DirectLighting lighting_;
+  SurfaceLighting surface_lighting_;
   const GpuScene* scene_ = nullptr;
   const ParticleMedium* medium_ = nullptr;
-  std::optional<GBuffer> gbuffer_;
   gl::Program shading_, sort_, splat_;
   gl::Buffer source_, order_;
   gl::VertexArray empty_vertex_array_;

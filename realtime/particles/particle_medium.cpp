@@ -4,11 +4,11 @@
 #include "realtime/particles/particle_shared.h"
 
 #include <fmt/format.h>
-#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace gib::rt {
 
@@ -71,22 +71,19 @@ void ParticleMedium::bind() const {
 }
 
 void ParticleMedium::setUniforms(const gl::Program& program) const {
-  const GLuint id = program.id();
   std::vector<glm::vec3> directions, irradiances;
   for (const scene::DirectionalLight& light : lights_) {
     directions.push_back(light.direction);
     irradiances.emplace_back(light.irradiance.r, light.irradiance.g, light.irradiance.b);
   }
-  const GLsizei n = GLsizei(lights_.size());
-  glProgramUniform1i(id, program.uniform("u_light_count"), n);
-  if (n > 0) {
-    glProgramUniform3fv(id, program.uniform("u_light_direction"), n,
-                        glm::value_ptr(directions.front()));
-    glProgramUniform3fv(id, program.uniform("u_light_irradiance"), n,
-                        glm::value_ptr(irradiances.front()));
-  }
-  glProgramUniform3f(id, program.uniform("u_albedo"), albedo_.r, albedo_.g, albedo_.b);
-  glProgramUniform3f(id, program.uniform("u_sky"), sky_.r, sky_.g, sky_.b);
+  // particle_medium.glsl declares the medium for every pass that includes it; each pass reads
+  // what it needs (the illumination network's visibility pass none of it), and the linker drops
+  // the rest.
+  program.setIfPresent("u_light_count", int(lights_.size()));
+  program.setIfPresent("u_light_direction", std::span<const glm::vec3>(directions));
+  program.setIfPresent("u_light_irradiance", std::span<const glm::vec3>(irradiances));
+  program.setIfPresent("u_albedo", albedo_);
+  program.setIfPresent("u_sky", sky_);
 }
 
 std::vector<glm::vec4> ParticleMedium::towardsLights() const {

@@ -18,8 +18,8 @@ void VolumeShadow::compute(const ParticleMedium& medium, const gl::Buffer& direc
   medium.bind();
   directions.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSphereDirectionsBinding);
   transmittance.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTransmittanceBinding);
-  glProgramUniform1i(program_.id(), program_.uniform("u_count"), medium.count());
-  glProgramUniform1i(program_.id(), program_.uniform("u_direction_count"), direction_count);
+  program_.set("u_count", medium.count());
+  program_.set("u_direction_count", direction_count);
   program_.use();
   gl::dispatchCompute(
       GLuint((medium.count() + gpu::kParticleGroupSize - 1) / gpu::kParticleGroupSize),

@@ -52,5 +52,56 @@ TEST(Parameters, DescribesEveryParameter) {
   EXPECT_NE(lines[3].find("hard|pcf|vsm"), std::string::npos);
 }
 
+// Typed parameters: a switch reads as a bool, an integer choice as an int, and each keeps the
+// canonical text that job ids and hashes were made of before the types existed.
+TEST(Parameters, BooleansAndIntegerChoicesAreTyped) {
+  const ParameterTable table = joinParameterTables(
+      {{booleanParameter("reuse", true, "keep the records")},
+       {integerChoiceParameter("atlas", 128, {64, 128, 256}, "texels", "atlas side")}});
+  const ParameterValues defaults = parseParameters(table, {}, "technique 'x'");
+  EXPECT_TRUE(defaults.boolean("reuse"));
+  EXPECT_EQ(defaults.integer("atlas"), 128);
+  const ParameterValues set = parseParameters(table, {"reuse=false", "atlas=256"}, "x");
+  EXPECT_FALSE(set.boolean("reuse"));
+  EXPECT_EQ(set.integer("atlas"), 256);
+  EXPECT_EQ(set.canonical(), (std::vector<std::pair<std::string, std::string>>{{"reuse", "false"},
+                                                                               {"atlas", "256"}}));
+  try {
+    parseParameters(table, {"reuse=yes"}, "technique 'x'");
+    ADD_FAILURE() << "reuse=yes was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("give a boolean in true|false"), std::string::npos)
+        << e.what();
+  }
+  try {
+    parseParameters(table, {"atlas=100"}, "technique 'x'");
+    ADD_FAILURE() << "atlas=100 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("64|128|256"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(describeParameters(table)[1].find("atlas (integer choice, default 128"),
+            std::string::npos);
+}
+
+// Reading a parameter as another type than it is declared is a mistake in the code that reads
+// it, not in anyone's input: a logic error, not a silent zero or a string compare.
+TEST(Parameters, ReadingAsAnotherTypeIsALogicError) {
+  const ParameterValues v = parseParameters(kTable, {}, "x");
+  EXPECT_THROW(v.integer("shadow"), std::logic_error);
+  EXPECT_THROW(v.boolean("detail"), std::logic_error);
+  EXPECT_THROW(v.vector3("albedo"), std::logic_error);
+  EXPECT_THROW(v.number("light_position"), std::logic_error);
+  EXPECT_THROW(v.text("missing"), std::logic_error);
+  EXPECT_DOUBLE_EQ(v.number("detail"), 1.0);  // an integer is a number
+}
+
+TEST(Parameters, JoinedTablesKeepTheirOrderAndRefuseANameTwice) {
+  const ParameterTable joined = joinParameterTables({{kTable[0], kTable[1]}, {kTable[3]}});
+  ASSERT_EQ(joined.size(), 3u);
+  EXPECT_EQ(joined[0].name, "detail");
+  EXPECT_EQ(joined[2].name, "shadow");
+  EXPECT_THROW(joinParameterTables({{kTable[0]}, {kTable[0]}}), std::logic_error);
+}
+
 }  // namespace
 }  // namespace gib

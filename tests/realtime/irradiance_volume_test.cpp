@@ -15,7 +15,6 @@
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
 
@@ -82,7 +81,7 @@ std::vector<glm::vec4> runProbeShader(const gl::Program& program,
   query_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTestFirstStorageBinding);
   result_buffer.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kTestFirstStorageBinding + 1);
   program.use();
-  glUniform1i(program.uniform("u_basis"), basis ? 1 : 0);
+  program.set("u_basis", basis ? 1 : 0);
   glDispatchCompute(GLuint(queries.size()), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(result_buffer.id(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)),
@@ -117,11 +116,10 @@ TEST_F(IrradianceVolumeGl, GlslBasisAndInterpolationAgreeWithTheCpuAndAreExactAt
   texels.bind(gpu::kProbeCoefficientsUnit);
   const gl::Buffer phong = gl::Buffer::fromVector(std::vector<float>(4, 0.0f));
   phong.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPhongFactorsBinding);
-  const GLuint id = program.id();
-  glProgramUniform1i(id, program.uniform("u_grid_n"), grid.n);
-  glProgramUniform3fv(id, program.uniform("u_grid_origin"), 1, glm::value_ptr(grid.origin));
-  glProgramUniform3fv(id, program.uniform("u_grid_cell"), 1, glm::value_ptr(grid.cell));
-  glProgramUniform1i(id, program.uniform("u_indirect_shadows"), 0);
+  program.set("u_grid_n", grid.n);
+  program.set("u_grid_origin", grid.origin);
+  program.set("u_grid_cell", grid.cell);
+  program.set("u_indirect_shadows", 0);
   std::vector<glm::vec4> points;
   for (int probe = 0; probe < grid.probeCount(); ++probe)
     points.push_back(glm::vec4(grid.probePosition(probe), 0));

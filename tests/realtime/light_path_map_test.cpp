@@ -453,15 +453,18 @@ TEST(LightPathMap, CountsThatDoNotFitAreRefusedWithTheFix) {
   EXPECT_NO_THROW(create({"entry_points=16", "clusters=16", "panes_used=16"}));
 }
 
+// The runner checks the technique's declared need once, before it makes the technique: a caller
+// that lends no ray caster is told how to run it.
 TEST_F(LightPathMapTest, WithoutARayCasterItSaysHowToRunIt) {
-  const scene::Scene s = facingPatches();
-  GpuScene gpu(s, 16, 16);
-  LightPathMapTechnique technique{LightPathMapSettings{}};
+  const TechniqueInfo& info = findTechnique("light_path_map");
+  TechniqueRunSettings settings;  // no services lent
+  settings.width = settings.height = 16;
   try {
-    technique.prepare(gpu, 16, 16);
+    runTechnique(facingPatches(), info, parseParameters(info.parameters, {}, "light_path_map"),
+                 settings);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("gibench render"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("gibench render"), std::string::npos) << e.what();
   }
 }
 

@@ -3,6 +3,7 @@
 // it grows, and while earlier draws are still queued; a push beyond its round is refused.
 #include "realtime/gl/stream_buffer.h"
 
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "support/gl_test_context.h"
 #include "support/glsl_sources.h"
@@ -89,8 +90,6 @@ TEST_F(StreamBufferTest, NoRoundIsOverwrittenBeforeItsDrawsReadIt) {
   framebuffer.attachColor(0, target);
   framebuffer.setDrawBuffers(1);
   framebuffer.bind();
-  glViewport(0, 0, kSide, kSide);
-  glEnable(GL_SCISSOR_TEST);
   const Program draw = buildProgram(
       {{GL_VERTEX_SHADER, "v.glsl"}, {GL_FRAGMENT_SHADER, "f.glsl"}}, "",
       test::glslSources({{"v.glsl",
@@ -104,14 +103,14 @@ TEST_F(StreamBufferTest, NoRoundIsOverwrittenBeforeItsDrawsReadIt) {
   const VertexArray vertices;
   vertices.bind();
   StreamBuffer stream;
+  const PipelineScope whole_target({.viewport = PixelRect{0, 0, kSide, kSide}});
   for (int round = 0; round < kRounds; ++round) {
     stream.beginRound({kRoundBytes});
     const std::vector<glm::uvec4> values = roundValues(round, kRoundBytes / sizeof(glm::uvec4));
     stream.bindRange(GL_SHADER_STORAGE_BUFFER, 0, stream.push(values), kRoundBytes);
-    glScissor(round % kSide, round / kSide, 1, 1);
+    const PipelineScope own_pixel({.scissor = PixelRect{round % kSide, round / kSide, 1, 1}});
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
-  glDisable(GL_SCISSOR_TEST);
   glFinish();
   EXPECT_LE(std::size_t(stream.regions()) * stream.regionBytes(), StreamBuffer::kMaxRingBytes);
   const image::Image image = readTexture(target, 4);

@@ -49,6 +49,8 @@ TechniqueInfo countingInfo() {
       .add("iteration", "one step")
       .add("iteration/select", "the first pass of a step")
       .add("iteration/update", "the second");
+  info.auxiliary_images = {{"state", "the counter"}};
+  info.statistics = {{"passes_per_step", "passes each step times"}};
   info.create = [](const ParameterValues&) { return std::make_unique<CountingTechnique>(); };
   return info;
 }

@@ -696,7 +696,7 @@ column = 3
 
 [[figure.panel]]   # neither: the first free cell, row by row
 job = "direct-sweep/shadow=hard"
-image = "aux:atlas"
+image = "difference"
 metric = "none"
 
 [[figure.panel]]
@@ -727,7 +727,7 @@ image = "difference"
               ElementsAre(Panel{"direct-sweep/shadow=pcf", "image", "PCF", 2, 3, "frame"},
                           Panel{"direct-sweep/shadow=hard", "difference", "", 1, 1, ""},
                           Panel{"cornell-reference", "reference", "", 1, 3, ""},
-                          Panel{"direct-sweep/shadow=hard", "aux:atlas", "", 1, 2, "none"},
+                          Panel{"direct-sweep/shadow=hard", "difference", "", 1, 2, "none"},
                           Panel{"direct-sweep/shadow=pcf", "flip", "", 2, 1, "full:relmse"}));
   // Without columns, one row of all the panels.
   const results::FigureSpec& second = suite.figures[1];
@@ -895,21 +895,83 @@ TEST(RepositorySuites, FigureSuitesLayOutTheDocumentsFigures) {
   }
 }
 
+// What a technique declares besides its passes (TechniqueInfo): its auxiliary images, its
+// statistics and what it needs of the scene. A suite naming one it does not have is refused when
+// it loads, at the line that names it, rather than when the report is written.
+constexpr const char* kRadiositySuite = R"(name = "declared"
+
+[defaults]
+width = 32
+height = 32
+
+[[case]]
+name = "radiosity"
+scene = "cornell"
+technique = "stochastic_radiosity"
+iterations = 2
+
+[[chart]]
+title = "atlas"
+jobs = "radiosity"
+x = "statistic:atlas_texels"
+y = "iteration"
+
+[[figure]]
+name = "atlas"
+title = "the radiance atlas"
+
+[[figure.panel]]
+job = "radiosity"
+image = "aux:atlas"
+)";
+
+TEST_F(SuiteFileTest, DeclaredAuxiliaryImagesAndStatisticsLoad) {
+  const Suite suite = load(kRadiositySuite);
+  ASSERT_EQ(suite.figures.size(), 1u);
+  EXPECT_EQ(suite.figures[0].panels[0].image, "aux:atlas");
+}
+
+TEST_F(SuiteFileTest, AnUndeclaredAuxiliaryImageIsRefusedWhereItIsNamed) {
+  const std::string text = replaced(kRadiositySuite, "\"aux:atlas\"", "\"aux:atlsa\"");
+  EXPECT_THAT(expectErrorAt(text, "aux:atlsa"),
+              HasSubstr("technique 'stochastic_radiosity' declares no auxiliary image 'atlsa'; "
+                        "choose one of aux:atlas"));
+}
+
+TEST_F(SuiteFileTest, AnUndeclaredStatisticIsRefusedWhereItIsNamed) {
+  const std::string text =
+      replaced(kRadiositySuite, "statistic:atlas_texels", "statistic:atlas_texel");
+  EXPECT_THAT(expectErrorAt(text, "statistic:atlas_texel"),
+              HasSubstr("names the statistic 'atlas_texel', which technique "
+                        "'stochastic_radiosity' does not declare; name one of its statistics: "
+                        "vertices, atlas_texels"));
+}
+
+TEST_F(SuiteFileTest, ATechniqueOnASceneWithoutWhatItNeedsIsRefusedAtItsCase) {
+  const std::string text = replaced(kRadiositySuite, "\"stochastic_radiosity\"",
+                                    "\"spherical_billboards\"\nset = { sky_directions = [0, 4] }");
+  const std::string cut = text.substr(0, text.find("[[chart]]"));
+  EXPECT_THAT(expectErrorAt(cut, "spherical_billboards"),
+              HasSubstr("job 'radiosity/sky_directions=0': technique 'spherical_billboards' "
+                        "renders a participating medium and scene 'cornell' has none"));
+  // On the cloud the same case loads.
+  EXPECT_NO_THROW(load(replaced(cut, "\"cornell\"", "\"cloud\"")));
+}
+
 TEST(RepositorySuites, NightlySuiteCoversEverySceneAndTechnique) {
   const Suite suite = loadSuiteFile(repositorySuite("nightly.toml"));
   EXPECT_EQ(suite.name, "nightly");
   std::set<std::pair<std::string, std::string>> covered;
   for (const Job& job : expandSuite(suite)) covered.emplace(job.scene.name, job.technique);
-  std::vector<std::pair<std::string, bool>> techniques = {{kReferenceTechnique, false}};
-  for (const rt::TechniqueInfo& info : rt::techniqueCatalogue())
-    techniques.emplace_back(info.name, info.requires_medium);
-  for (const scene::BuiltinSceneInfo& scene : scene::builtinScenes()) {
-    // A technique that renders a participating medium refuses a scene without one.
-    const bool has_medium = !scene::loadScene(scene.name).medium.empty();
-    for (const auto& [technique, requires_medium] : techniques) {
-      if (requires_medium && !has_medium) continue;
-      EXPECT_TRUE(covered.count({scene.name, technique}))
-          << "suites/nightly.toml has no case for " << scene.name << " x " << technique;
+  for (const scene::BuiltinSceneInfo& info : scene::builtinScenes()) {
+    EXPECT_TRUE(covered.count({info.name, kReferenceTechnique}))
+        << "suites/nightly.toml has no reference case for " << info.name;
+    // A technique refuses a scene that lacks what it needs (a medium, a sky).
+    const scene::Scene scene = scene::loadScene(info.name);
+    for (const rt::TechniqueInfo& technique : rt::techniqueCatalogue()) {
+      if (rt::missingSceneNeed(technique, scene)) continue;
+      EXPECT_TRUE(covered.count({info.name, technique.name}))
+          << "suites/nightly.toml has no case for " << info.name << " x " << technique.name;
     }
   }
 }

@@ -58,13 +58,12 @@ ScatteredLightMatch matchScatteredLight(const ref::RenderResult& reference,
 }
 
 void expectScatteredLightMatches(const ScatteredLightMatch& match,
-                                 const CentreLightingAllowance& allowance, double tests,
-                                 double family_significance) {
-  const double k_ratio = familyWiseBound(match.ratio.dof, tests, family_significance);
-  EXPECT_NEAR(match.ratio.mean, 1.0, allowance.mean + k_ratio * match.ratio.standard_error)
-      << "scattered light against the reference's (standard error " << match.ratio.standard_error
-      << ", allowance " << allowance.mean << ")";
-  const double k_relmse = familyWiseBound(match.relmse.dof, tests, family_significance);
+                                 const CentreLightingAllowance& allowance,
+                                 const TestFamily& family) {
+  EXPECT_TRUE(family.tTest(match.ratio.mean, 1.0, match.ratio.standard_error, match.ratio.dof,
+                           allowance.mean))
+      << "scattered light against the reference's";
+  const double k_relmse = family.criticalValue(match.relmse.dof);
   EXPECT_LT(match.relmse.mean, match.relmse_allowance + k_relmse * match.relmse.standard_error)
       << "relMSE less the reference's noise (standard error " << match.relmse.standard_error
       << ", allowance " << match.relmse_allowance << ")";

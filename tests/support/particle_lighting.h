@@ -7,6 +7,7 @@
 #include "reference/progressive_renderer.h"
 #include "scene/scene.h"
 #include "support/render_statistics.h"
+#include "support/statistical_test.h"
 
 #include <vector>
 
@@ -58,12 +59,12 @@ ScatteredLightMatch matchScatteredLight(const ref::RenderResult& reference,
                                         const image::Image& image, const image::Image& transmitted,
                                         const CentreLightingAllowance& allowance);
 
-// Expects the scattered light's ratio within 1 ± (allowance.mean + k·standard error) and the
-// relMSE less noise below relmse_allowance + k·standard error, k from familyWiseBound over
-// `tests` such estimates at family-wise significance `family_significance` (two-sided, so
-// conservative for the relMSE, which only an excess fails).
+// Expects the scattered light's ratio within 1 ± (allowance.mean + k·standard error) (the
+// family's t test) and the relMSE less noise below relmse_allowance + k·standard error, k the
+// family's two-sided critical value (conservative for the relMSE, which only an excess fails).
+// Two tests of `family`.
 void expectScatteredLightMatches(const ScatteredLightMatch& match,
-                                 const CentreLightingAllowance& allowance, double tests,
-                                 double family_significance);
+                                 const CentreLightingAllowance& allowance,
+                                 const TestFamily& family);
 
 }  // namespace gib::test

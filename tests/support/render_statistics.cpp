@@ -1,6 +1,5 @@
 #include "support/render_statistics.h"
 
-#include "metrics/distributions.h"
 #include "metrics/image_metrics.h"
 
 #include <cmath>
@@ -49,15 +48,6 @@ MeanEstimate difference(const MeanEstimate& a, const MeanEstimate& b) {
   return {a.mean - b.mean, std::sqrt(va + vb),
           denominator > 0 ? (va + vb) * (va + vb) / denominator
                           : std::numeric_limits<double>::infinity()};
-}
-
-double familyWiseBound(double dof, double tests, double family_significance) {
-  const double p = 1 - metrics::sidakSignificance(family_significance, tests) / 2;
-  return std::isinf(dof) ? metrics::normalQuantile(p) : metrics::studentTQuantile(p, dof);
-}
-
-double familyWiseBound(const ref::RenderResult& render, double tests, double family_significance) {
-  return familyWiseBound(double(render.variance_dof), tests, family_significance);
 }
 
 MeanEstimate relMseLessNoise(const ref::RenderResult& reference, const image::Image& test,

@@ -39,14 +39,6 @@ MeanEstimate sampleMean(const std::vector<double>& values);
 // Welch–Satterthwaite.
 MeanEstimate difference(const MeanEstimate& a, const MeanEstimate& b);
 
-// The bound on |estimate − truth| / standard error that all of `tests` estimates, each following
-// Student's t with `dof` degrees of freedom, keep with probability 1 − family_significance
-// (two-sided; Šidák's per-test significance 1 − (1 − α)^(1/tests)).
-double familyWiseBound(double dof, double tests, double family_significance);
-
-// The same bound for values of `render`, under Student's t with the render's degrees of freedom.
-double familyWiseBound(const ref::RenderResult& render, double tests, double family_significance);
-
 // relMSE against the truth that `reference` estimates: the mean over pixels of the channels'
 // ((t − r)² − Var r − Var t) / (r² + ε), ε = metrics::kRelativeEpsilon. E[(t − r)²] is the
 // squared error of t against the truth plus the reference's variance (plus t's own where t is an

@@ -68,6 +68,12 @@ void benchmarkTechniqueFrames(benchmark::State& state, const std::string& techni
   gl::Context& context = benchContext();
   context.makeCurrent();
   const scene::Scene scene = scene::loadScene(scene_name, scene_set);
+  // The needs the runner checks, checked here too: the benchmark makes the technique itself.
+  if (const std::optional<std::string> missing =
+          missingNeed(findTechnique(technique_name), scene, services)) {
+    state.SkipWithError(missing->c_str());
+    return;
+  }
   std::unique_ptr<Technique> technique = createTechnique(technique_name, set);
   const int w = width > 0 ? width : size;
   GpuScene gpu_scene(scene, w, size);

@@ -8,11 +8,8 @@
 // file.
 #pragma once
 
-#include "realtime/gbuffer/gbuffer.h"
-#include "realtime/lighting/direct_lighting.h"
+#include "realtime/lighting/surface_lighting.h"
 #include "realtime/technique.h"
-
-#include <optional>
 
 namespace gib::rt {
 
@@ -24,12 +21,11 @@ class DirectTechnique final : public Technique {
   void render(Frame& frame) override;
   scene::PathClass pathClass() const override { return {0, 1}; }
 
-  std::size_t lightSampleCount() const { return lighting_.sampleCount(); }
+  std::size_t lightSampleCount() const { return surface_lighting_.lighting().sampleCount(); }
 
  private:
-  DirectLighting lighting_;
+  SurfaceLighting surface_lighting_;
   const GpuScene* scene_ = nullptr;
-  std::optional<GBuffer> gbuffer_;
 };
 
 TechniqueInfo directTechniqueInfo();

@@ -1,6 +1,7 @@
 #include "realtime/techniques/hemispherical_gather/hemisphere_gather.h"
 
 #include "realtime/gl/gpu_commands.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
 #include "realtime/techniques/hemispherical_gather/voxel_slices.h"
@@ -15,19 +16,6 @@ namespace {
 
 // What a batch's views (RGBA32F and 32-bit depth: 20 bytes a texel) may take.
 constexpr double kBatchBudgetBytes = 128.0 * 1024 * 1024;
-
-void setUniform(const gl::Program& program, const char* name, int value) {
-  glProgramUniform1i(program.id(), program.uniform(name), value);
-}
-void setUniform(const gl::Program& program, const char* name, float value) {
-  glProgramUniform1f(program.id(), program.uniform(name), value);
-}
-void setUniform(const gl::Program& program, const char* name, glm::ivec2 value) {
-  glProgramUniform2i(program.id(), program.uniform(name), value.x, value.y);
-}
-void setUniform(const gl::Program& program, const char* name, glm::vec3 value) {
-  glProgramUniform3fv(program.id(), program.uniform(name), 1, &value[0]);
-}
 
 // The box around a gather point whose geometry the voxel-slice view draws itself: the point's
 // voxel grown by half a voxel on each side ("we expand a little the volume", §5.3).
@@ -55,29 +43,29 @@ HemisphereGather::HemisphereGather(int projection, int view_size, int spacing, i
   sum_program_ = gl::buildProgram(
       {{GL_COMPUTE_SHADER, "realtime/techniques/hemispherical_gather/gather_sum.comp.glsl"}});
   setPointUniforms(view_program_);
-  setUniform(view_program_, "u_projection", projection);
-  setUniform(view_program_, "u_near", 1e-4f * extent);
-  setUniform(view_program_, "u_far", 2.0f * extent);
-  setUniform(sum_program_, "u_grid", grid_);
-  setUniform(sum_program_, "u_size", view_size);
-  setUniform(sum_program_, "u_projection", projection);
+  view_program_.set("u_projection", projection);
+  view_program_.set("u_near", 1e-4f * extent);
+  view_program_.set("u_far", 2.0f * extent);
+  sum_program_.set("u_grid", grid_);
+  sum_program_.set("u_size", view_size);
+  sum_program_.set("u_projection", projection);
   if (projection == gpu::kProjectionVoxelSlices) {
     slices_program_ = gl::buildProgram(
         {{GL_VERTEX_SHADER, "realtime/techniques/hemispherical_gather/gather_slices.vert.glsl"},
          {GL_GEOMETRY_SHADER, "realtime/techniques/hemispherical_gather/gather_view.geom.glsl"},
          {GL_FRAGMENT_SHADER, "realtime/techniques/hemispherical_gather/gather_slices.frag.glsl"}});
     setPointUniforms(slices_program_);
-    setUniform(slices_program_, "u_size", view_size);
-    setUniform(slices_program_, "u_near", 1e-4f * extent);
-    setUniform(slices_program_, "u_far", 2.0f * extent);
+    slices_program_.set("u_size", view_size);
+    slices_program_.set("u_near", 1e-4f * extent);
+    slices_program_.set("u_far", 2.0f * extent);
   }
 }
 
 void HemisphereGather::setPointUniforms(const gl::Program& program) const {
-  setUniform(program, "u_grid", grid_);
-  setUniform(program, "u_spacing", spacing_);
-  setUniform(program, "u_lift", 1e-4f * extent_);
-  setUniform(program, "u_normals_face_viewer", 0);
+  program.set("u_grid", grid_);
+  program.set("u_spacing", spacing_);
+  program.set("u_lift", 1e-4f * extent_);
+  program.set("u_normals_face_viewer", 0);
 }
 
 void HemisphereGather::gather(const GpuScene& scene, const atlas::AtlasMesh& mesh,
@@ -89,50 +77,50 @@ void HemisphereGather::gather(const GpuScene& scene, const atlas::AtlasMesh& mes
   const int clip_distances =
       projection_ == gpu::kProjectionVoxelSlices ? gpu::kGatherClipDistances : 1;
   if (slices) {
-    setUniform(view_program_, "u_near_box", nearBox(*slices));
-    setUniform(slices_program_, "u_near_box", nearBox(*slices));
+    view_program_.set("u_near_box", nearBox(*slices));
+    slices_program_.set("u_near_box", nearBox(*slices));
     slices->setLookupUniforms(slices_program_);
   }
   auto pass = profiler.pass(kGatherPass);
+  // The nearest surface wins, both sides of every surface hiding what is behind them (no
+  // culling); the views' geometry is clipped, and the slices are depth-tested against it.
+  const gl::PipelineState depth_tested = {.depth_test = GL_LESS,
+                                          .viewport = gl::PixelRect{0, 0, view_size_, view_size_}};
+  gl::PipelineState clipped = depth_tested;
+  clipped.clip_distances = clip_distances;
   const int points = grid_.x * grid_.y;
   for (int first = 0; first < points; first += batch_) {
     const int count = std::min(batch_, points - first);
     {
       auto views = profiler.pass(kGatherViewsPass);
+      const gl::PipelineScope state(clipped);
       const float clear[4] = {background.r, background.g, background.b, 0};
       const float far_depth = 1.0f;
       const gl::Framebuffer& framebuffer = views_->framebuffer();
       glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
       glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
       framebuffer.bind();
-      glViewport(0, 0, view_size_, view_size_);
       scene.bindSceneBuffers();
       gbuffer.bindTextures();
       radiance_atlas.bind(gpu::kRadianceAtlasUnit);
       view_program_.use();
-      setUniform(view_program_, "u_first_point", first);
-      glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LESS);
-      glDepthMask(GL_TRUE);
-      glDisable(GL_CULL_FACE);  // both sides of every surface hide what is behind them
-      glDisable(GL_BLEND);
-      for (int i = 0; i < clip_distances; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
+      view_program_.set("u_first_point", first);
       mesh.draw(count);
-      for (int i = 0; i < clip_distances; ++i) glDisable(GL_CLIP_DISTANCE0 + i);
     }
     if (slices) {
       // Beyond the near box, the slices: one full-layer triangle per point, depth-tested
       // against the near geometry.
       auto traced = profiler.pass(kGatherSlicesPass);
+      const gl::PipelineScope state(depth_tested);
       slices->faces().bind(gpu::kVoxelSlicesUnit);
       slices_program_.use();
-      setUniform(slices_program_, "u_first_point", first);
+      slices_program_.set("u_first_point", first);
       empty_vertex_array_.bind();
       gl::drawArraysInstanced(GL_TRIANGLES, 0, 3, count);
     }
     auto sum = profiler.pass(kGatherSumPass);
     sum_program_.use();
-    setUniform(sum_program_, "u_first_point", first);
+    sum_program_.set("u_first_point", first);
     views_->color().bind(gpu::kGatherViewsUnit);
     glBindImageTexture(gpu::kImageDestinationUnit, irradiance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RGBA32F);

@@ -1,7 +1,9 @@
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
 
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
+#include "realtime/technique_parameters.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
 
 #include <glm/geometric.hpp>
@@ -42,17 +44,16 @@ HemisphericalGatherTechnique::HemisphericalGatherTechnique(const ParameterValues
     : projection_(projectionOf(p)),
       view_size_(viewSizeOf(p)),
       spacing_(p.integer("gather_spacing")),
-      atlas_resolution_(std::stoi(p.text("atlas"))),
+      atlas_resolution_(p.integer("atlas")),
       tessellation_(p.integer("tessellation")),
       light_samples_(p.integer("light_samples")),
       slices_(p.integer("slices")),
       slice_size_(p.integer("slice_size")),
-      lighting_(shadowSettings(p), p.integer("light_samples")) {}
+      surface_lighting_(p) {}
 
 void HemisphericalGatherTechnique::prepare(const GpuScene& scene, int width, int height) {
   scene_ = &scene;
-  gbuffer_.emplace(width, height);
-  lighting_.prepare(scene);
+  surface_lighting_.prepare(scene, width, height);
   const float extent = std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-6f);
 
   // The directly lit scene as a radiance atlas, from the same light samples as the camera's.
@@ -69,28 +70,23 @@ void HemisphericalGatherTechnique::prepare(const GpuScene& scene, int width, int
       gl::FullScreenPass("realtime/techniques/hemispherical_gather/gather_interpolate.frag.glsl");
   const gl::Program& interpolate = interpolate_.program();
   gather_->setPointUniforms(interpolate);
-  glProgramUniform1f(interpolate.id(), interpolate.uniform("u_plane_tolerance"), 0.01f * extent);
+  interpolate.set("u_plane_tolerance", 0.01f * extent);
 }
 
 void HemisphericalGatherTechnique::render(Frame& frame) {
   const GpuScene& scene = *scene_;
-  gbuffer_->render(scene, &frame.profiler);
-  lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
-  lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
-  gather_->gather(scene, *mesh_, atlas_.radiance, *gbuffer_, frame.profiler, glm::vec3(0.0f),
-                  voxels_ ? &*voxels_ : nullptr);
+  surface_lighting_.render(scene, frame.target, frame.profiler);
+  gather_->gather(scene, *mesh_, atlas_.radiance, surface_lighting_.gbuffer(), frame.profiler,
+                  glm::vec3(0.0f), voxels_ ? &*voxels_ : nullptr);
 
   auto pass = frame.profiler.pass(kInterpolatePass);
   scene.bindSceneBuffers();
-  gbuffer_->bindTextures();
+  surface_lighting_.gbuffer().bindTextures();
   gather_->irradiance().bind(gpu::kGatherIrradianceUnit);
-  gbuffer_->albedo().bind(gpu::kGBufferAlbedoUnit);
+  surface_lighting_.gbuffer().albedo().bind(gpu::kGBufferAlbedoUnit);
   frame.target.bind();
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
+  const gl::PipelineScope adding({.blend = gl::kAdditiveBlend});
   interpolate_.draw();
-  glDisable(GL_BLEND);
 }
 
 std::vector<AuxiliaryImage> HemisphericalGatherTechnique::auxiliaryImages() {
@@ -121,30 +117,31 @@ TechniqueInfo hemisphericalGatherTechniqueInfo() {
   info.source =
       "Fournier & Péroche, Speeding up global illumination computations using programmable "
       "GPUs, §5";
-  info.parameters = {
-      choiceParameter("projection", "hemispherical",
-                      {"perspective", "hemispherical", "voxel_slices"},
-                      "gather view: a 160° pinhole along the normal, the fish-eye projection "
-                      "whose pixels all weigh the same, or the fish-eye of voxel slices with "
-                      "the objects near the point drawn"),
-      numericParameter("view_size", ParameterType::kInteger, "0", 0, 1024, "pixels",
-                       "gather view side; 0: the paper's, 256 perspective, 64 hemispherical, 40 "
-                       "voxel slices"),
-      numericParameter("slices", ParameterType::kInteger, "64", 2, 512, "",
-                       "voxel slices: slabs per axis (the paper's 64)"),
-      numericParameter("slice_size", ParameterType::kInteger, "64", 4, 1024, "texels",
-                       "voxel slices: each face's side (the paper's 64)"),
-      numericParameter("gather_spacing", ParameterType::kInteger, "8", 1, 64, "pixels",
-                       "one gather point per spacing × spacing block of the image"),
-      choiceParameter("atlas", "256", {"64", "128", "256", "512", "1024"},
-                      "radiance atlas texels per side (the directly lit scene the views see)"),
-      numericParameter(
-          "tessellation", ParameterType::kInteger, "3", 0, 4, "levels",
-          "each triangle split into 4^levels for the views (the fish-eye bends edges)"),
-  };
-  for (const ParameterSpec& spec : directLightingParameters()) info.parameters.push_back(spec);
-  info.passes.add(passPath({kFramePass, kGBufferPass}), "what each pixel's primary ray hits");
-  DirectLighting::declarePasses(info.passes, kFramePass);
+  info.parameters = joinParameterTables(
+      {{
+           choiceParameter("projection", "hemispherical",
+                           {"perspective", "hemispherical", "voxel_slices"},
+                           "gather view: a 160° pinhole along the normal, the fish-eye projection "
+                           "whose pixels all weigh the same, or the fish-eye of voxel slices with "
+                           "the objects near the point drawn"),
+           numericParameter(
+               "view_size", ParameterType::kInteger, "0", 0, 1024, "pixels",
+               "gather view side; 0: the paper's, 256 perspective, 64 hemispherical, 40 "
+               "voxel slices"),
+           numericParameter("slices", ParameterType::kInteger, "64", 2, 512, "",
+                            "voxel slices: slabs per axis (the paper's 64)"),
+           numericParameter("slice_size", ParameterType::kInteger, "64", 4, 1024, "texels",
+                            "voxel slices: each face's side (the paper's 64)"),
+           numericParameter("gather_spacing", ParameterType::kInteger, "8", 1, 64, "pixels",
+                            "one gather point per spacing × spacing block of the image"),
+           atlasParameter(256,
+                          "radiance atlas texels per side (the directly lit scene the views see)"),
+           numericParameter(
+               "tessellation", ParameterType::kInteger, "3", 0, 4, "levels",
+               "each triangle split into 4^levels for the views (the fish-eye bends edges)"),
+       },
+       SurfaceLighting::parameters()});
+  SurfaceLighting::declarePasses(info.passes);
   const std::string gather = passPath({kFramePass, kGatherPass});
   info.passes.add(gather, "per batch of gather points: their views, then their sums");
   info.passes.add(passPath({gather, kGatherViewsPass}),
@@ -155,6 +152,20 @@ TechniqueInfo hemisphericalGatherTechniqueInfo() {
                   "each view summed into irradiance (cos θ dω per pixel)");
   info.passes.add(passPath({kFramePass, kInterpolatePass}),
                   "irradiance interpolated to every pixel, times ρ/π, added to the frame");
+  info.auxiliary_images = {
+      {"gather-irradiance",
+       "irradiance at the gather points (one pixel per point, the grid over the image)"},
+      {"radiance-atlas", "the directly lit scene the gather views see (ρ/π · direct E)"},
+  };
+  info.statistics = {
+      {"gather_points", "gather points over the image"},
+      {"view_size", "side of each gather view in pixels"},
+      {"points_per_batch", "gather points whose views are drawn at once"},
+      {"view_triangles", "triangles each gather view draws (after tessellation)"},
+      {"prepare_atlas_ms", "time to build the directly lit radiance atlas"},
+      {"prepare_voxels_ms", "time to build the voxel slices (voxel_slices only)"},
+      {"voxel_slices_mb", "memory of the voxel slices (voxel_slices only)"},
+  };
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<HemisphericalGatherTechnique>(values);
   };

@@ -11,7 +11,7 @@
 #include "realtime/atlas/direct_radiance_atlas.h"
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/fullscreen_pass.h"
-#include "realtime/lighting/direct_lighting.h"
+#include "realtime/lighting/surface_lighting.h"
 #include "realtime/technique.h"
 #include "realtime/techniques/hemispherical_gather/hemisphere_gather.h"
 #include "realtime/techniques/hemispherical_gather/voxel_slices.h"
@@ -39,9 +39,8 @@ class HemisphericalGatherTechnique final : public Technique {
   int light_samples_;
   int slices_;
   int slice_size_;
-  DirectLighting lighting_;
+  SurfaceLighting surface_lighting_;
   const GpuScene* scene_ = nullptr;
-  std::optional<GBuffer> gbuffer_;
   atlas::DirectRadianceAtlas atlas_;
   std::optional<atlas::AtlasMesh> mesh_;
   std::optional<VoxelSlices> voxels_;

@@ -1,5 +1,6 @@
 #include "realtime/techniques/hemispherical_gather/voxel_slices.h"
 
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_shared.h"
 
@@ -28,25 +29,23 @@ VoxelSlices::VoxelSlices(const GpuScene& scene, const atlas::AtlasMesh& mesh,
       {{GL_VERTEX_SHADER, "realtime/techniques/hemispherical_gather/voxelize.vert.glsl"},
        {GL_GEOMETRY_SHADER, "realtime/techniques/hemispherical_gather/gather_view.geom.glsl"},
        {GL_FRAGMENT_SHADER, "realtime/techniques/hemispherical_gather/voxelize.frag.glsl"}});
-  const GLuint id = program.id();
-  glProgramUniform1i(id, program.uniform("u_slices"), slices);
-  glProgramUniform3fv(id, program.uniform("u_bounds_min"), 1, &lo_[0]);
-  glProgramUniform3fv(id, program.uniform("u_bounds_max"), 1, &hi_[0]);
+  program.set("u_slices", slices);
+  program.set("u_bounds_min", lo_);
+  program.set("u_bounds_max", hi_);
   framebuffer.bind();
-  glViewport(0, 0, size, size);
   scene.bindSceneBuffers();
   radiance_atlas.bind(gpu::kRadianceAtlasUnit);
   program.use();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  for (int face = 0; face < kFaces; ++face) {
-    glProgramUniform1i(id, program.uniform("u_axis"), face / 2);
-    glProgramUniform1i(id, program.uniform("u_side"), face % 2);
-    glProgramUniform1i(id, program.uniform("u_face"), face);
-    mesh.draw(slices);
+  {
+    // The nearest surface of a slab wins, seen from either side (no culling).
+    const gl::PipelineScope state(
+        {.depth_test = GL_LESS, .viewport = gl::PixelRect{0, 0, size, size}});
+    for (int face = 0; face < kFaces; ++face) {
+      program.set("u_axis", face / 2);
+      program.set("u_side", face % 2);
+      program.set("u_face", face);
+      mesh.draw(slices);
+    }
   }
   faces_ = std::move(target).takeColor();
   glFinish();
@@ -55,9 +54,9 @@ VoxelSlices::VoxelSlices(const GpuScene& scene, const atlas::AtlasMesh& mesh,
 }
 
 void VoxelSlices::setLookupUniforms(const gl::Program& program) const {
-  glProgramUniform1i(program.id(), program.uniform("u_slices"), slices_);
-  glProgramUniform3fv(program.id(), program.uniform("u_bounds_min"), 1, &lo_[0]);
-  glProgramUniform3fv(program.id(), program.uniform("u_bounds_max"), 1, &hi_[0]);
+  program.set("u_slices", slices_);
+  program.set("u_bounds_min", lo_);
+  program.set("u_bounds_max", hi_);
 }
 
 }  // namespace gib::rt

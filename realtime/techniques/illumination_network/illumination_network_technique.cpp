@@ -58,8 +58,9 @@ void IlluminationNetworkTechnique::prepare(const GpuScene& scene, int /*width*/,
   auto build = [&](const char* file) {
     gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, folder + file}});
     medium_->setUniforms(program);
-    glProgramUniform1i(program.id(), program.uniform("u_count"), medium_->count());
-    glProgramUniform1i(program.id(), program.uniform("u_direction_count"), direction_count_);
+    // Scattering works on one particle's directions at a time: it has no particle count.
+    program.setIfPresent("u_count", medium_->count());
+    program.set("u_direction_count", direction_count_);
     return program;
   };
   visibility_program_ = build("visibility.comp.glsl");
@@ -175,12 +176,12 @@ TechniqueInfo illuminationNetworkTechniqueInfo() {
   info.source =
       "Szirmay-Kalos et al., GPU-Based Techniques for Global Illumination Effects, "
       "§9.6 (participating media illumination networks)";
-  info.parameters = {numericParameter(
-      "directions", ParameterType::kInteger, "128", 1, gpu::kMaxNetworkDirections, "directions",
-      "D sample directions shared by all particles, spread evenly over the sphere (the book: "
-      "128)")};
-  const ParameterTable shared = ParticleCompositor::parameters();
-  info.parameters.insert(info.parameters.end(), shared.begin(), shared.end());
+  info.parameters = joinParameterTables(
+      {{numericParameter("directions", ParameterType::kInteger, "128", 1,
+                         gpu::kMaxNetworkDirections, "directions",
+                         "D sample directions shared by all particles, spread evenly over the "
+                         "sphere (the book: 128)")},
+       ParticleCompositor::parameters()});
   ParticleCompositor::declarePasses(info.passes);
   info.passes.add(std::string(kIterationPass),
                   "one iteration: one more scattering order in the network");
@@ -188,7 +189,16 @@ TechniqueInfo illuminationNetworkTechniqueInfo() {
                   "J = E + a·Σ_d I p / Σ_d p: each particle's radiance towards each direction");
   info.passes.add(passPath({kIterationPass, kTransportPass}),
                   "I gathered along each particle's chain in V, the sky at its end");
-  info.requires_medium = true;
+  info.statistics = {
+      {"particles", "particles of the medium"},
+      {"directions", "sample directions shared by all particles"},
+      {"lights", "directional lights"},
+      {"network_mb", "memory of the network (V, E, J, I per particle and direction)"},
+      {"mean_chain_length", "mean particles along a direction's visibility chain"},
+      {"prepare_visibility_ms", "time to build the visibility network"},
+      {"prepare_emission_ms", "time to compute the first-order emission"},
+  };
+  info.needs = {TechniqueNeed::kMedium};
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IlluminationNetworkTechnique>(values);
   };

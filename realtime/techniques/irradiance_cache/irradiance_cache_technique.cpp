@@ -9,6 +9,7 @@
 #include "realtime/irradiance_cache/irradiance_cache_parameters.h"
 #include "realtime/irradiance_cache/zone_illustration.h"
 #include "realtime/render_target.h"
+#include "realtime/technique_parameters.h"
 #include "realtime/techniques/irradiance_cache/ward_hemisphere.h"
 #include "scene/camera.h"
 
@@ -69,14 +70,12 @@ IrradianceCacheTechnique::IrradianceCacheTechnique(const ParameterValues& p)
       record_rays_(p.integer("record_rays")),
       light_samples_(p.integer("light_samples")),
       threads_(p.integer("threads")),
-      reuse_records_(p.text("reuse_records") == "true"),
-      seed_(std::uint64_t(p.integer("seed"))) {}
+      reuse_records_(p.boolean("reuse_records")),
+      // The hemisphere jitter of seed s is the stream the cache's seed s + 1 gave before seeds
+      // had one default (0) across techniques, so the default run draws the rays it always drew.
+      seed_(std::uint64_t(p.integer("seed")) + 1) {}
 
 void IrradianceCacheTechnique::prepare(const GpuScene& scene, int width, int height) {
-  if (!services_.ray_caster)
-    throw InputError(
-        "technique 'irradiance_cache' traces its rays with the harness's ray caster, which this "
-        "caller did not lend; run it through `gibench render` or `gibench run`");
   scene_ = &scene;
   const auto start = Clock::now();
   caster_ = services_.ray_caster(scene.scene());
@@ -335,20 +334,18 @@ TechniqueInfo irradianceCacheTechniqueInfo() {
       "CPU baseline: direct light plus one bounce (up to LDDE) from Ward's irradiance cache, "
       "Embree rays, an octree, every core";
   info.source = "SIGGRAPH 2008 course notes, Irradiance cache splatting (Ward's cache, §1)";
-  info.parameters = irradianceCacheParameters();
-  const ParameterTable own = {
-      numericParameter("record_rays", ParameterType::kInteger, "512", 4, 65536, "",
-                       "hemisphere rays per record, stratified M × N with N ≈ πM (Ward & "
-                       "Heckbert)"),
-      numericParameter("light_samples", ParameterType::kInteger, "16", 1, 4096, "",
-                       "points over the area lights and directions over the sky (the GPU "
-                       "techniques' samples), lit with shadow rays"),
-      numericParameter("threads", ParameterType::kInteger, "0", 0, 1024, "",
-                       "worker threads; 0: one per hardware thread (results do not depend on it)"),
-      numericParameter("seed", ParameterType::kInteger, "1", 0, 2147483647, "",
-                       "seed of the hemisphere rays' jitter"),
-  };
-  info.parameters.insert(info.parameters.end(), own.begin(), own.end());
+  info.parameters = joinParameterTables(
+      {irradianceCacheParameters(),
+       {
+           numericParameter("record_rays", ParameterType::kInteger, "512", 4, 65536, "",
+                            "hemisphere rays per record, stratified M × N with N ≈ πM (Ward & "
+                            "Heckbert)"),
+           lightSamplesParameter(),
+           numericParameter(
+               "threads", ParameterType::kInteger, "0", 0, 1024, "",
+               "worker threads; 0: one per hardware thread (results do not depend on it)"),
+           seedParameter("seed of the hemisphere rays' jitter"),
+       }});
   info.passes.add(passPath({kFramePass, kSurfacesPass}),
                   "CPU: primary rays and their direct light (shadow rays to the light samples)");
   info.passes.add(
@@ -357,6 +354,21 @@ TechniqueInfo irradianceCacheTechniqueInfo() {
   info.passes.add(passPath({kFramePass, kInterpolationPass}),
                   "CPU: the octree looked up at every pixel");
   info.passes.add(passPath({kFramePass, kUploadPass}), "the image copied into the frame");
+  info.auxiliary_images = {
+      {"zones", "each record's zone of influence over the image"},
+      {"irradiance", "the interpolated irradiance E (before ρ/π)"},
+  };
+  info.statistics = {
+      {"records", "records in the cache"},
+      {"record_rounds", "rounds of the record traversal"},
+      {"rays_per_record", "hemisphere rays traced per record"},
+      {"records_ms", "time to compute the records"},
+      {"records_per_second", "records computed per second"},
+      {"surfaces_ms", "time of the primary rays and their direct light"},
+      {"threads", "worker threads used"},
+      {"prepare_ray_caster_ms", "time to build the ray caster's BVH"},
+  };
+  info.needs = {TechniqueNeed::kRayCaster};
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IrradianceCacheTechnique>(values);
   };

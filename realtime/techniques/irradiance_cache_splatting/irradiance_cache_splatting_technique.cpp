@@ -3,9 +3,11 @@
 #include "common/elapsed.h"
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/irradiance_cache/irradiance_cache_parameters.h"
 #include "realtime/irradiance_cache/zone_illustration.h"
+#include "realtime/technique_parameters.h"
 #include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h"
 
 #include <glm/geometric.hpp>
@@ -59,20 +61,19 @@ int samplingOf(const ParameterValues& p) {
 
 IrradianceCacheSplattingTechnique::IrradianceCacheSplattingTechnique(const ParameterValues& p)
     : placement_(recordPlacementSettings(p)),
-      atlas_resolution_(std::stoi(p.text("atlas"))),
+      atlas_resolution_(p.integer("atlas")),
       light_samples_(p.integer("light_samples")),
-      reuse_records_(p.text("reuse_records") == "true"),
-      lighting_(shadowSettings(p), p.integer("light_samples")) {
+      reuse_records_(p.boolean("reuse_records")),
+      surface_lighting_(p) {
   sampling_.sampling = samplingOf(p);
   sampling_.size = p.integer("sample_size");
   sampling_.plane_fov_degrees = float(p.number("plane_fov"));
-  sampling_.extend_border = p.text("border_compensation") == "true";
+  sampling_.extend_border = p.boolean("border_compensation");
 }
 
 void IrradianceCacheSplattingTechnique::prepare(const GpuScene& scene, int width, int height) {
   scene_ = &scene;
-  gbuffer_.emplace(width, height);
-  lighting_.prepare(scene);
+  surface_lighting_.prepare(scene, width, height);
   const float extent = std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-6f);
   atlas_ = atlas::makeDirectRadianceAtlas(scene, atlas_resolution_, light_samples_);
   mesh_.emplace(atlas_.triangles, atlas_.layout, 0);  // perspective views keep edges straight
@@ -85,21 +86,18 @@ void IrradianceCacheSplattingTechnique::prepare(const GpuScene& scene, int width
   const std::string folder = "realtime/techniques/irradiance_cache_splatting/";
   splat_program_ = gl::buildProgram({{GL_VERTEX_SHADER, folder + "record_splat.vert.glsl"},
                                      {GL_FRAGMENT_SHADER, folder + "record_splat.frag.glsl"}});
-  glProgramUniform1f(splat_program_.id(), splat_program_.uniform("u_accuracy"),
-                     placement_.accuracy);
+  splat_program_.set("u_accuracy", placement_.accuracy);
   normalize_ = gl::FullScreenPass(folder + "record_normalize.frag.glsl");
   // The cache of the first frame (the notes: ~20 s, then ~1 s per frame reusing it), timed by the
   // statistics; frames rebuild it only without reuse.
-  gbuffer_->render(scene);
+  surface_lighting_.gbuffer().render(scene);
   gl::PassProfiler unmeasured;  // passes outside a frame are no-ops
   buildRecords(unmeasured);
 }
 
 void IrradianceCacheSplattingTechnique::render(Frame& frame) {
   const GpuScene& scene = *scene_;
-  gbuffer_->render(scene, &frame.profiler);
-  lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
-  lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
+  surface_lighting_.render(scene, frame.target, frame.profiler);
   if (!reuse_records_) buildRecords(frame.profiler);
   splat(frame);
 }
@@ -113,7 +111,7 @@ void IrradianceCacheSplattingTechnique::buildRecords(gl::PassProfiler& profiler)
   {
     auto detection = profiler.pass(kRecordDetectionPass);
     const auto t = Clock::now();
-    surfaces_ = readSurfaces(*gbuffer_, scene.camera().position);
+    surfaces_ = readSurfaces(surface_lighting_.gbuffer(), scene.camera().position);
     detection_ms_ += millisecondsSince(t);
   }
   RecordPlacement placement(surfaces_, scene.camera(), placement_);
@@ -170,28 +168,24 @@ void IrradianceCacheSplattingTechnique::splat(Frame& frame) {
     glClearNamedFramebufferfv(sums_target_.id(), GL_COLOR, 0, zero);
     if (!records_.empty()) {
       sums_target_.bind();
-      glViewport(0, 0, sums_.width(), sums_.height());
+      const gl::PipelineScope adding({
+          .blend = gl::kAdditiveBlend,
+          .viewport = gl::PixelRect{0, 0, sums_.width(), sums_.height()},
+      });
       scene.bindSceneBuffers();
-      gbuffer_->bindTextures();
+      surface_lighting_.gbuffer().bindTextures();
       records_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kRecordsBinding);
       splat_program_.use();
-      glDisable(GL_DEPTH_TEST);
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);
       empty_vertex_array_.bind();
       gl::drawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(records_.size()));
-      glDisable(GL_BLEND);
     }
   }
   auto pass = frame.profiler.pass(kNormalizePass);
   sums_.bind(gpu::kSplatSumsUnit);
-  gbuffer_->albedo().bind(gpu::kSplatAlbedoUnit);
+  surface_lighting_.gbuffer().albedo().bind(gpu::kSplatAlbedoUnit);
   frame.target.bind();
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
+  const gl::PipelineScope adding({.blend = gl::kAdditiveBlend});
   normalize_.draw();
-  glDisable(GL_BLEND);
 }
 
 std::vector<AuxiliaryImage> IrradianceCacheSplattingTechnique::auxiliaryImages() {
@@ -229,25 +223,25 @@ TechniqueInfo irradianceCacheSplattingTechniqueInfo() {
       "records by rasterized hemisphere sampling, interpolation by splatting their zones";
   info.source =
       "SIGGRAPH 2008 course notes, Irradiance cache splatting and GPU hemisphere sampling";
-  info.parameters = irradianceCacheParameters();
-  const ParameterTable own = {
-      choiceParameter("sampling", "plane", {"plane", "hemicube"},
-                      "record hemisphere rasterized by one wide camera with the notes' border "
-                      "compensation, or by the five faces of a hemicube"),
-      numericParameter("sample_size", ParameterType::kInteger, "64", 4, 1024, "pixels",
-                       "side of each sampling image (the plane's, or each hemicube face's)"),
-      numericParameter("plane_fov", ParameterType::kNumber, "126.87", 10, 179, "degrees",
-                       "plane sampling's aperture; Larsen et al.'s 126.87° sees 86% of the "
-                       "directions (notes 001)"),
-      choiceParameter("border_compensation", "true", {"true", "false"},
-                      "plane sampling: border pixels also stand for the directions beyond them"),
-      choiceParameter("atlas", "256", {"64", "128", "256", "512", "1024"},
-                      "radiance atlas texels per side (the directly lit scene the views see)"),
-  };
-  info.parameters.insert(info.parameters.end(), own.begin(), own.end());
-  for (const ParameterSpec& spec : directLightingParameters()) info.parameters.push_back(spec);
-  info.passes.add(passPath({kFramePass, kGBufferPass}), "what each pixel's primary ray hits");
-  DirectLighting::declarePasses(info.passes, kFramePass);
+  info.parameters = joinParameterTables(
+      {irradianceCacheParameters(),
+       {
+           choiceParameter("sampling", "plane", {"plane", "hemicube"},
+                           "record hemisphere rasterized by one wide camera with the notes' border "
+                           "compensation, or by the five faces of a hemicube"),
+           numericParameter("sample_size", ParameterType::kInteger, "64", 4, 1024, "pixels",
+                            "side of each sampling image (the plane's, or each hemicube face's)"),
+           numericParameter("plane_fov", ParameterType::kNumber, "126.87", 10, 179, "degrees",
+                            "plane sampling's aperture; Larsen et al.'s 126.87° sees 86% of the "
+                            "directions (notes 001)"),
+           booleanParameter(
+               "border_compensation", true,
+               "plane sampling: border pixels also stand for the directions beyond them"),
+           atlasParameter(256,
+                          "radiance atlas texels per side (the directly lit scene the views see)"),
+       },
+       SurfaceLighting::parameters()});
+  SurfaceLighting::declarePasses(info.passes);
   const std::string records = passPath({kFramePass, kRecordsPass});
   info.passes.add(records,
                   "the cache built (the first frame, or every frame without reuse), round by "
@@ -265,6 +259,21 @@ TechniqueInfo irradianceCacheSplattingTechniqueInfo() {
                   "every record's zone drawn as a screen-aligned quad: (w·E, w) blended");
   info.passes.add(passPath({kFramePass, kNormalizePass}),
                   "Σ w·E / Σ w times ρ/π added to the frame");
+  info.auxiliary_images = {
+      {"zones", "each record's zone of influence over the image"},
+      {"irradiance", "the splatted irradiance E = Σ w·E_k / Σ w (before ρ/π)"},
+  };
+  info.statistics = {
+      {"records", "records in the cache"},
+      {"record_rounds", "rounds of the record traversal"},
+      {"pixels_per_record", "pixels of each record's sampling images"},
+      {"records_per_batch", "records whose hemispheres are rasterized at once"},
+      {"records_ms", "time to compute the records"},
+      {"record_detection_ms", "CPU time finding the pixels that need a record"},
+      {"record_sampling_ms", "time of the records' GPU hemisphere sampling"},
+      {"records_per_second", "records computed per second"},
+      {"prepare_atlas_ms", "time to build the directly lit radiance atlas"},
+  };
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IrradianceCacheSplattingTechnique>(values);
   };

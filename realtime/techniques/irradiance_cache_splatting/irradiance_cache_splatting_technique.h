@@ -14,7 +14,7 @@
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/fullscreen_pass.h"
 #include "realtime/irradiance_cache/record_placement.h"
-#include "realtime/lighting/direct_lighting.h"
+#include "realtime/lighting/surface_lighting.h"
 #include "realtime/technique.h"
 #include "realtime/techniques/irradiance_cache_splatting/record_sampler.h"
 
@@ -48,9 +48,8 @@ class IrradianceCacheSplattingTechnique final : public Technique {
   int atlas_resolution_;
   int light_samples_;
   bool reuse_records_;
-  DirectLighting lighting_;
+  SurfaceLighting surface_lighting_;
   const GpuScene* scene_ = nullptr;
-  std::optional<GBuffer> gbuffer_;
   atlas::DirectRadianceAtlas atlas_;
   std::optional<atlas::AtlasMesh> mesh_;
   std::optional<RecordSampler> sampler_;

@@ -1,6 +1,7 @@
 #include "realtime/techniques/irradiance_cache_splatting/record_sampler.h"
 
 #include "realtime/gl/gpu_commands.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/techniques/irradiance_cache_splatting/irradiance_cache_splatting_shared.h"
 
@@ -41,17 +42,15 @@ RecordSampler::RecordSampler(const RecordSamplingSettings& settings, float exten
                                     {GL_GEOMETRY_SHADER, folder + "record_view.geom.glsl"},
                                     {GL_FRAGMENT_SHADER, folder + "record_view.frag.glsl"}});
   sum_program_ = gl::buildProgram({{GL_COMPUTE_SHADER, folder + "record_sum.comp.glsl"}});
-  const GLuint view = view_program_.id(), sum = sum_program_.id();
-  glProgramUniform1i(view, view_program_.uniform("u_faces"), faces_);
-  glProgramUniform1f(view, view_program_.uniform("u_half_width"), half_width_);
-  glProgramUniform1f(view, view_program_.uniform("u_near"), 1e-4f * extent);
-  glProgramUniform1f(view, view_program_.uniform("u_far"), 2.0f * extent);
-  glProgramUniform1f(view, view_program_.uniform("u_lift"), 1e-4f * extent);
-  glProgramUniform1i(sum, sum_program_.uniform("u_faces"), faces_);
-  glProgramUniform1i(sum, sum_program_.uniform("u_size"), size);
-  glProgramUniform1f(sum, sum_program_.uniform("u_half_width"), half_width_);
-  glProgramUniform1i(sum, sum_program_.uniform("u_extend_border"),
-                     plane && settings.extend_border ? 1 : 0);
+  view_program_.set("u_faces", faces_);
+  view_program_.set("u_half_width", half_width_);
+  view_program_.set("u_near", 1e-4f * extent);
+  view_program_.set("u_far", 2.0f * extent);
+  view_program_.set("u_lift", 1e-4f * extent);
+  sum_program_.set("u_faces", faces_);
+  sum_program_.set("u_size", size);
+  sum_program_.set("u_half_width", half_width_);
+  sum_program_.set("u_extend_border", plane && settings.extend_border ? 1 : 0);
 }
 
 int RecordSampler::pixelsPerRecord() const {
@@ -67,29 +66,28 @@ void RecordSampler::sample(const GpuScene& scene, const atlas::AtlasMesh& mesh,
     const int n = std::min(batch_, first + count - begin);
     {
       auto pass = profiler.pass(kRecordViewsPass);
+      // The nearest surface wins, both sides of every surface hiding what is behind them (no
+      // culling); what lies below the record's tangent plane is clipped (record_view.vert.glsl).
+      const gl::PipelineScope state({
+          .depth_test = GL_LESS,
+          .clip_distances = 1,
+          .viewport = gl::PixelRect{0, 0, settings_.size, settings_.size},
+      });
       const float clear[4] = {background.r, background.g, background.b, kNoSurfaceDistance};
       const float far_depth = 1.0f;
       const gl::Framebuffer& framebuffer = views_->framebuffer();
       glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
       glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
       framebuffer.bind();
-      glViewport(0, 0, settings_.size, settings_.size);
       scene.bindSceneBuffers();
       radiance_atlas.bind(gpu::kSplatRadianceAtlasUnit);
       view_program_.use();
-      glUniform1i(view_program_.uniform("u_first_record"), begin);
-      glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LESS);
-      glDepthMask(GL_TRUE);
-      glDisable(GL_CULL_FACE);  // both sides of every surface hide what is behind them
-      glDisable(GL_BLEND);
-      glEnable(GL_CLIP_DISTANCE0);
+      view_program_.set("u_first_record", begin);
       mesh.draw(n * faces_);
-      glDisable(GL_CLIP_DISTANCE0);
     }
     auto pass = profiler.pass(kRecordSumsPass);
     sum_program_.use();
-    glUniform1i(sum_program_.uniform("u_first_record"), begin);
+    sum_program_.set("u_first_record", begin);
     views_->color().bind(gpu::kRecordViewsUnit);
     gl::dispatchCompute(GLuint(n), 1, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |

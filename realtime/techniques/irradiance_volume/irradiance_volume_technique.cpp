@@ -2,6 +2,7 @@
 
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/render_target.h"
 #include "realtime/sh/spherical_harmonics.h"
@@ -20,15 +21,15 @@ namespace {
 constexpr long long kMaxAtlasTexels = 1 << 25;
 
 void setGridUniforms(const gl::Program& program, const ProbeGrid& grid, bool indirect_shadows) {
-  const GLuint id = program.id();
-  glProgramUniform1i(id, program.uniform("u_grid_n"), grid.n);
-  glProgramUniform3fv(id, program.uniform("u_grid_origin"), 1, glm::value_ptr(grid.origin));
-  glProgramUniform3fv(id, program.uniform("u_grid_cell"), 1, glm::value_ptr(grid.cell));
+  program.set("u_grid_n", grid.n);
+  program.set("u_grid_origin", grid.origin);
+  program.set("u_grid_cell", grid.cell);
   const std::array<float, sh::kShMaxBand + 1> lambert = sh::lambertBandFactors();
-  glProgramUniform4fv(id, program.uniform("u_lambert_factors"), 1, lambert.data());
-  glProgramUniform1i(id, program.uniform("u_indirect_shadows"), indirect_shadows ? 1 : 0);
-  glProgramUniform1i(id, program.uniform("u_face"), grid.face);
-  glProgramUniform1i(id, program.uniform("u_tiles_x"), grid.tiles_x);
+  static_assert(sh::kShMaxBand + 1 == 4, "u_lambert_factors is a vec4: bands 0..3");
+  program.set("u_lambert_factors", glm::make_vec4(lambert.data()));
+  program.set("u_indirect_shadows", indirect_shadows ? 1 : 0);
+  program.set("u_face", grid.face);
+  program.set("u_tiles_x", grid.tiles_x);
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ IrradianceVolumeTechnique::IrradianceVolumeTechnique(const ParameterValues& p)
       band_(p.integer("sh_order")),
       indirect_shadows_(p.text("indirect_shadows") == "on"),
       rasterise_every_frame_(p.text("motion") == "objects"),
-      lighting_(shadowSettings(p), p.integer("light_samples")) {
+      surface_lighting_(p) {
   // Refused when the technique is created, so a suite is refused before it runs anything.
   checkProbeAtlasSize(grid_n_, face_, kMaxAtlasTexels);
 }
@@ -51,11 +52,10 @@ void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int he
   const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
   near_ = 1e-4f * extent;
   far_ = 2.0f * extent;
-  camera_gbuffer_.emplace(width, height);
+  surface_lighting_.prepare(scene, width, height);
   probe_gbuffer_.emplace(grid_.atlasWidth(), grid_.atlasHeight());
   probe_direct_.emplace(grid_.atlasWidth(), grid_.atlasHeight());
   probe_lit_.emplace(grid_.atlasWidth(), grid_.atlasHeight());
-  lighting_.prepare(scene);
 
   const int count = sh::shCoefficientCount(band_);
   coefficients_ = gl::Buffer(
@@ -74,9 +74,9 @@ void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int he
 
   project_ = gl::buildProgram(
       {{GL_COMPUTE_SHADER, "realtime/techniques/irradiance_volume/sh_projection.comp.glsl"}});
-  glProgramUniform1i(project_.id(), project_.uniform("u_face"), grid_.face);
-  glProgramUniform1i(project_.id(), project_.uniform("u_tiles_x"), grid_.tiles_x);
-  glProgramUniform1i(project_.id(), project_.uniform("u_coefficient_count"), count);
+  project_.set("u_face", grid_.face);
+  project_.set("u_tiles_x", grid_.tiles_x);
+  project_.set("u_coefficient_count", count);
   indirect_ = gl::FullScreenPass("realtime/techniques/irradiance_volume/indirect.frag.glsl",
                                  fmt::format("#define SH_COEFFICIENT_COUNT {}\n", count));
   setGridUniforms(indirect_.program(), grid_, indirect_shadows_);
@@ -102,17 +102,14 @@ void IrradianceVolumeTechnique::addIndirect(const GBuffer& gbuffer, const Render
                                             bool probe_view) {
   scene_->bindSceneBuffers();
   indirect_.use();
-  glUniform1i(indirect_.program().uniform("u_normals_face_viewer"), probe_view ? 1 : 0);
+  indirect_.program().set("u_normals_face_viewer", probe_view ? 1 : 0);
   gbuffer.bindTextures();
   probe_gbuffer_->position().bind(gpu::kProbePositionUnit);
   coefficient_texels_.bind(gpu::kProbeCoefficientsUnit);
   phong_factors_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPhongFactorsBinding);
   target.bind();
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
+  const gl::PipelineScope adding({.blend = gl::kAdditiveBlend});
   indirect_.draw();
-  glDisable(GL_BLEND);
 }
 
 void IrradianceVolumeTechnique::bounce(gl::PassProfiler& profiler,
@@ -141,38 +138,37 @@ glm::vec3 IrradianceVolumeTechnique::lightOffset(const Frame& frame) const {
 
 void IrradianceVolumeTechnique::render(Frame& frame) {
   gl::PassProfiler& profiler = frame.profiler;
-  lighting_.setLightOffset(lightOffset(frame));
+  surface_lighting_.lighting().setLightOffset(lightOffset(frame));
   // Without bounces the probes are never read: the frame is `direct`'s.
   const bool probes = bounces_ > 0;
   if (probes && (rasterise_every_frame_ || !rasterised_)) {
     auto pass = profiler.pass(kRasteriseProbesPass);
     rasteriseProbes();
   }
-  camera_gbuffer_->render(*scene_, &profiler);
-  lighting_.writeEmission(*scene_, *camera_gbuffer_, frame.target, profiler);
-  std::vector<LitView> views = {{&*camera_gbuffer_, &frame.target, kShadingPass, false}};
+  surface_lighting_.drawSurfaces(*scene_, frame.target, profiler);
+  std::vector<LitView> probe_views;
   if (probes) {
     probe_direct_->clear(0, 0, 0);
-    views.push_back({&*probe_gbuffer_, &*probe_direct_, kProbeDirectPass, true});
+    probe_views.push_back({&*probe_gbuffer_, &*probe_direct_, kProbeDirectPass, true});
   }
-  lighting_.addDirect(*scene_, views, profiler);
+  surface_lighting_.addDirect(*scene_, &frame.target, profiler, std::move(probe_views));
   bounce(profiler);
   if (bounces_ > 0) {
     auto pass = profiler.pass(kIndirectPass);
-    addIndirect(*camera_gbuffer_, frame.target, false);
+    addIndirect(surface_lighting_.gbuffer(), frame.target, false);
   }
 }
 
 std::vector<AuxiliaryImage> IrradianceVolumeTechnique::auxiliaryImages() {
   if (bounces_ == 0) return {};
   // Fig. 2 (d, e): the indirect light after each bounce, and what each bounce adds.
-  RenderTarget scratch(camera_gbuffer_->width(), camera_gbuffer_->height());
+  RenderTarget scratch(surface_lighting_.gbuffer().width(), surface_lighting_.gbuffer().height());
   gl::PassProfiler untimed;
   std::vector<AuxiliaryImage> images;
   image::Image previous;
   bounce(untimed, [&](int b) {
     scratch.clear(0, 0, 0);
-    addIndirect(*camera_gbuffer_, scratch, false);
+    addIndirect(surface_lighting_.gbuffer(), scratch, false);
     image::Image total = scratch.read();
     image::Image added = total;
     if (b > 1)
@@ -200,39 +196,51 @@ TechniqueInfo irradianceVolumeTechniqueInfo() {
       "irradiance volume: cube maps at grid points projected to spherical harmonics, k bounces "
       "of indirect light over shadow-mapped direct light";
   info.source = "Nijasure, Pattanaik & Goel, Real-Time Global Illumination on GPU (2005)";
-  info.parameters = {
-      numericParameter("bounces", ParameterType::kInteger, "2", 0, 8, "",
-                       "iterations of indirect light (the paper's 2); 0 is direct light alone"),
-      numericParameter("grid", ParameterType::kInteger, "4", 2, 16, "probes per axis",
-                       "uniform grid of n×n×n probes over the scene bounds (the paper's 4)"),
-      numericParameter("face", ParameterType::kInteger, "16", 4, 64, "texels",
-                       "cube-map face size at each probe (the paper's 16)"),
-      numericParameter("sh_order", ParameterType::kInteger, "2", 1, 3, "band",
-                       "highest spherical-harmonic band: 2 gives the paper's 9 coefficients, 3 "
-                       "gives 16"),
-      choiceParameter("indirect_shadows", "off", {"off", "on"},
-                      "§6: weight the eight probes by whether their cube maps see the point"),
-      choiceParameter("motion", "objects", {"objects", "light"},
-                      "what moves between frames: objects (the cube maps are rasterised every "
-                      "frame, the paper's dynamic scene) or the light (it circles, back at rest "
-                      "on the last frame; the cube maps are rasterised once)"),
-  };
-  for (ParameterSpec spec : directLightingParameters()) info.parameters.push_back(std::move(spec));
+  info.parameters = joinParameterTables(
+      {{
+           numericParameter(
+               "bounces", ParameterType::kInteger, "2", 0, 8, "",
+               "iterations of indirect light (the paper's 2); 0 is direct light alone"),
+           numericParameter("grid", ParameterType::kInteger, "4", 2, 16, "probes per axis",
+                            "uniform grid of n×n×n probes over the scene bounds (the paper's 4)"),
+           numericParameter("face", ParameterType::kInteger, "16", 4, 64, "texels",
+                            "cube-map face size at each probe (the paper's 16)"),
+           numericParameter(
+               "sh_order", ParameterType::kInteger, "2", 1, 3, "band",
+               "highest spherical-harmonic band: 2 gives the paper's 9 coefficients, 3 "
+               "gives 16"),
+           choiceParameter("indirect_shadows", "off", {"off", "on"},
+                           "§6: weight the eight probes by whether their cube maps see the point"),
+           choiceParameter(
+               "motion", "objects", {"objects", "light"},
+               "what moves between frames: objects (the cube maps are rasterised every "
+               "frame, the paper's dynamic scene) or the light (it circles, back at rest "
+               "on the last frame; the cube maps are rasterised once)"),
+       },
+       SurfaceLighting::parameters()});
   PassDeclarations& passes = info.passes;
   passes.add(passPath({kFramePass, kRasteriseProbesPass}),
              "the probes' cube maps as tiles of one G-buffer (every frame with motion=objects)");
-  passes.add(passPath({kFramePass, kGBufferPass}), "what each camera pixel's primary ray hits");
-  DirectLighting::declarePasses(
-      passes, kFramePass,
-      {{kProbeDirectPass,
-        "light added into the probes' cube maps (Table 1: rendering cube maps "
-        "using raster data)"}});
+  SurfaceLighting::declarePasses(
+      passes, {{kProbeDirectPass,
+                "light added into the probes' cube maps (Table 1: rendering cube maps "
+                "using raster data)"}});
   passes.add(passPath({kFramePass, kShProjectionPass}),
              "eq. 2: the lit cube maps projected to SH coefficients, per bounce");
   passes.add(passPath({kFramePass, kRelightProbesPass}),
              "the cube maps relit with the previous bounce's indirect light");
   passes.add(passPath({kFramePass, kIndirectPass}),
              "eq. 3-6: the last bounce's indirect light added into the camera view");
+  info.auxiliary_images = {
+      {"indirect-<n>", "the light bounce n adds (camera view)"},
+      {"indirect", "all indirect light after the last bounce"},
+  };
+  info.statistics = {
+      {"grid_points", "probes in the grid"},
+      {"cube_texels", "texels of all probes' cube maps"},
+      {"sh_coefficients", "spherical-harmonic coefficients per probe and channel"},
+      {"vertices", "vertices drawn per view of the scene"},
+  };
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IrradianceVolumeTechnique>(values);
   };

@@ -10,7 +10,7 @@
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/fullscreen_pass.h"
 #include "realtime/gl/objects.h"
-#include "realtime/lighting/direct_lighting.h"
+#include "realtime/lighting/surface_lighting.h"
 #include "realtime/technique.h"
 #include "realtime/techniques/irradiance_volume/probe_grid.h"
 
@@ -50,12 +50,12 @@ class IrradianceVolumeTechnique final : public Technique {
 
   int bounces_, grid_n_, face_, band_;
   bool indirect_shadows_, rasterise_every_frame_;
-  DirectLighting lighting_;
+  SurfaceLighting surface_lighting_;
   const GpuScene* scene_ = nullptr;
   ProbeGrid grid_;
   float near_ = 0, far_ = 0;
   bool rasterised_ = false;
-  std::optional<GBuffer> camera_gbuffer_, probe_gbuffer_;
+  std::optional<GBuffer> probe_gbuffer_;
   std::optional<RenderTarget> probe_direct_, probe_lit_;
   gl::Buffer coefficients_, weights_, phong_factors_;
   gl::Texture coefficient_texels_;  // coefficients_ as a buffer texture, for the lookups

@@ -3,6 +3,7 @@
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/shader_library.h"
+#include "realtime/technique_parameters.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
 
 #include <glm/geometric.hpp>
@@ -50,13 +51,11 @@ std::vector<glm::vec4> occludersOf(const scene::Scene& scene, const AreaLight& l
 }  // namespace
 
 JitteredLightSamplingTechnique::JitteredLightSamplingTechnique(const ParameterValues& p)
-    : coverage_(coverageSettings(p)),
-      lighting_(shadowSettings(p), p.integer("light_samples"), /*area_lights=*/false) {}
+    : coverage_(coverageSettings(p)), surface_lighting_(p, /*area_lights=*/false) {}
 
 void JitteredLightSamplingTechnique::prepare(const GpuScene& scene, int width, int height) {
   scene_ = &scene;
-  gbuffer_.emplace(width, height);
-  lighting_.prepare(scene);
+  surface_lighting_.prepare(scene, width, height);
   const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
   lights_ = groupAreaLights(scene.emitters(), extent);
   lift_ = 1e-5f * extent;
@@ -76,17 +75,16 @@ void JitteredLightSamplingTechnique::prepare(const GpuScene& scene, int width, i
   const int samples =
       coverage_.scheme == CoverageScheme::kJittered ? coverage_.samples_per_pixel : 0;
   for (const gl::Program* program : {&draw_program_, &weigh_program_}) {
-    const GLuint id = program->id();
-    glProgramUniform1i(id, program->uniform("u_point_count"), points_);
-    glProgramUniform1i(id, program->uniform("u_gbuffer_width"), width);
-    glProgramUniform1f(id, program->uniform("u_lift"), lift_);
-    glProgramUniform1i(id, program->uniform("u_normals_face_viewer"), 0);
-    glProgramUniform1i(id, program->uniform("u_size"), coverage_.size);
-    glProgramUniform1i(id, program->uniform("u_samples"), samples);
-    glProgramUniform1ui(id, program->uniform("u_seed"), coverage_.seed);
+    program->set("u_point_count", points_);
+    program->set("u_gbuffer_width", width);
+    program->set("u_lift", lift_);
+    program->set("u_normals_face_viewer", 0);
+    program->set("u_size", coverage_.size);
+    program->set("u_samples", samples);
+    program->set("u_seed", coverage_.seed);
   }
-  glProgramUniform1i(weigh_program_.id(), weigh_program_.uniform("u_equal_weights"),
-                     coverage_.scheme == CoverageScheme::kOcclusionQuery);
+  weigh_program_.set("u_equal_weights",
+                     coverage_.scheme == CoverageScheme::kOcclusionQuery ? 1 : 0);
 
   // Per light, its triangles then its occluders.
   for (const AreaLight& light : lights_) {
@@ -100,10 +98,9 @@ void JitteredLightSamplingTechnique::prepare(const GpuScene& scene, int width, i
 
 void JitteredLightSamplingTechnique::render(Frame& frame) {
   const GpuScene& scene = *scene_;
-  gbuffer_->render(scene, &frame.profiler);
-  lighting_.writeEmission(scene, *gbuffer_, frame.target, frame.profiler);
-  if (lighting_.sampleCount() > 0)
-    lighting_.addDirect(scene, {{&*gbuffer_, &frame.target}}, frame.profiler);
+  surface_lighting_.drawSurfaces(scene, frame.target, frame.profiler);
+  if (surface_lighting_.lighting().sampleCount() > 0)
+    surface_lighting_.addDirect(scene, &frame.target, frame.profiler);
   if (lights_.empty()) return;
   auto pass = frame.profiler.pass(kAreaLightsPass);
   for (std::size_t i = 0; i < lights_.size(); ++i) sampleAreaLight(i, frame.target, frame.profiler);
@@ -116,13 +113,12 @@ void JitteredLightSamplingTechnique::sampleAreaLight(std::size_t index, const Re
   const auto light_vertices = GLsizei(light.triangles.size());
   const auto all_vertices = GLsizei(triangles.bytes() / sizeof(glm::vec4));
   for (const gl::Program* program : {&draw_program_, &weigh_program_}) {
-    glProgramUniform1i(program->id(), program->uniform("u_light_vertices"), light_vertices);
-    glProgramUniform3fv(program->id(), program->uniform("u_emitting_side"), 1, &light.normal[0]);
+    program->set("u_light_vertices", light_vertices);
+    program->set("u_emitting_side", light.normal);
   }
-  glProgramUniform3fv(weigh_program_.id(), weigh_program_.uniform("u_emission"), 1,
-                      &light.emission[0]);
+  weigh_program_.set("u_emission", light.emission);
   scene_->bindSceneBuffers();
-  gbuffer_->bindTextures();
+  surface_lighting_.gbuffer().bindTextures();
   triangles.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kCoverageTrianglesBinding);
 
   for (int first = 0; first < points_; first += batch_) {
@@ -130,14 +126,14 @@ void JitteredLightSamplingTechnique::sampleAreaLight(std::size_t index, const Re
     {
       auto coverage = profiler.pass(kCoveragePass);
       draw_program_.use();
-      glProgramUniform1i(draw_program_.id(), draw_program_.uniform("u_first_point"), first);
+      draw_program_.set("u_first_point", first);
       vertex_array_.bind();
       drawCoverage(coverage_layers_->framebuffer(), coverage_.size, light_vertices, all_vertices,
                    count);
     }
     auto weighing = profiler.pass(kWeighingPass);
     weigh_program_.use();
-    glProgramUniform1i(weigh_program_.id(), weigh_program_.uniform("u_first_point"), first);
+    weigh_program_.set("u_first_point", first);
     coverage_layers_->color().bind(gpu::kCoverageUnit);
     glBindImageTexture(gpu::kImageDestinationUnit, target.color().id(), 0, GL_FALSE, 0,
                        GL_READ_WRITE, GL_RGBA32F);
@@ -163,27 +159,32 @@ TechniqueInfo jitteredLightSamplingTechniqueInfo() {
   info.source =
       "Fournier & Péroche, Speeding up global illumination computations using programmable "
       "GPUs, §4";
-  info.parameters = {
-      choiceParameter("scheme", "jittered", {"occlusion_query", "regular", "jittered"},
-                      "how the coverage image samples the light: visible pixel centres counted "
-                      "alike, pixel centres weighted by their solid angle, or jittered samples"),
-      choiceParameter("samples_per_pixel", "1", {"1", "4", "8"},
-                      "jittered: samples per pixel, one in each stratum (2×2, 4×2)"),
-      numericParameter("sampling_size", ParameterType::kInteger, "32", kMinCoverageSize,
-                       kMaxCoverageSize, "pixels",
-                       "coverage image side, per point and light (the paper: 32, 48, 64)"),
-      numericParameter("seed", ParameterType::kInteger, "0", 0, 2147483647, "",
-                       "seed of the jittered sample positions"),
-  };
-  for (const ParameterSpec& spec : directLightingParameters()) info.parameters.push_back(spec);
-  info.passes.add(passPath({kFramePass, kGBufferPass}), "what each pixel's primary ray hits");
-  DirectLighting::declarePasses(info.passes, kFramePass);
+  info.parameters = joinParameterTables(
+      {{
+           choiceParameter(
+               "scheme", "jittered", {"occlusion_query", "regular", "jittered"},
+               "how the coverage image samples the light: visible pixel centres counted "
+               "alike, pixel centres weighted by their solid angle, or jittered samples"),
+           integerChoiceParameter("samples_per_pixel", 1, {1, 4, 8}, "",
+                                  "jittered: samples per pixel, one in each stratum (2×2, 4×2)"),
+           numericParameter("sampling_size", ParameterType::kInteger, "32", kMinCoverageSize,
+                            kMaxCoverageSize, "pixels",
+                            "coverage image side, per point and light (the paper: 32, 48, 64)"),
+           seedParameter("seed of the jittered sample positions"),
+       },
+       SurfaceLighting::parameters()});
+  SurfaceLighting::declarePasses(info.passes);
   const std::string area = passPath({kFramePass, kAreaLightsPass});
   info.passes.add(area, "per area light, per batch of points: coverage, then weighing");
   info.passes.add(passPath({area, kCoveragePass}),
                   "the light and its occluders rasterized into each point's coverage layer");
   info.passes.add(passPath({area, kWeighingPass}),
                   "each point's visible samples weighed by solid angle, BRDF and cosine");
+  info.statistics = {
+      {"points", "shading points lit by the area lights"},
+      {"area_lights", "area lights sampled by rasterization"},
+      {"points_per_batch", "points whose coverage images are drawn at once"},
+  };
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<JitteredLightSamplingTechnique>(values);
   };

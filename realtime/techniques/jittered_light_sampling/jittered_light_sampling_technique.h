@@ -8,7 +8,7 @@
 #pragma once
 
 #include "realtime/gbuffer/gbuffer.h"
-#include "realtime/lighting/direct_lighting.h"
+#include "realtime/lighting/surface_lighting.h"
 #include "realtime/technique.h"
 #include "realtime/techniques/jittered_light_sampling/area_lights.h"
 #include "realtime/techniques/jittered_light_sampling/light_coverage_sampler.h"
@@ -30,9 +30,8 @@ class JitteredLightSamplingTechnique final : public Technique {
   void sampleAreaLight(std::size_t light, const RenderTarget& target, gl::PassProfiler& profiler);
 
   CoverageSettings coverage_;
-  DirectLighting lighting_;
+  SurfaceLighting surface_lighting_;
   const GpuScene* scene_ = nullptr;
-  std::optional<GBuffer> gbuffer_;
   std::vector<AreaLight> lights_;
   int batch_ = 0;  // points per coverage draw
   int points_ = 0;

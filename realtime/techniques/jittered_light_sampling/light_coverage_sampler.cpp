@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "realtime/gl/gpu_commands.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_shared.h"
 
@@ -83,23 +84,16 @@ void drawCoverage(const gl::Framebuffer& framebuffer, int size, GLsizei light_ve
   glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, zero);
   glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
   framebuffer.bind();
-  glViewport(0, 0, size, size);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_COLOR_LOGIC_OP);
-  glLogicOp(GL_OR);
-  glDepthFunc(GL_ALWAYS);
-  glDepthMask(GL_TRUE);
+  // The light's samples are OR-ed in wherever it lies, its depth written; then the occluders in
+  // front of it clear theirs (AND NOT), leaving the light's depth.
+  const gl::PipelineScope light_state(
+      {.depth_test = GL_ALWAYS, .logic_op = GL_OR, .viewport = gl::PixelRect{0, 0, size, size}});
   gl::drawArraysInstanced(GL_TRIANGLES, 0, light_vertices, instances);
   if (all_vertices > light_vertices) {
-    glLogicOp(GL_AND_INVERTED);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
+    const gl::PipelineScope occluder_state(
+        {.depth_test = GL_LESS, .depth_write = false, .logic_op = GL_AND_INVERTED});
     gl::drawArraysInstanced(GL_TRIANGLES, light_vertices, all_vertices - light_vertices, instances);
   }
-  glDisable(GL_COLOR_LOGIC_OP);
-  glDepthMask(GL_TRUE);
 }
 
 LightCoverageSampler::LightCoverageSampler(const std::vector<glm::vec3>& light,
@@ -130,10 +124,10 @@ LightCoverageSampler::LightCoverageSampler(const std::vector<glm::vec3>& light,
   const int samples = settings.scheme == CoverageScheme::kJittered ? settings.samples_per_pixel : 0;
   if (samples > gpu::kMaxSamplesPerPixel)
     throw std::invalid_argument("at most 8 jittered samples per pixel fit the coverage image");
-  glProgramUniform1i(program_.id(), program_.uniform("u_size"), settings.size);
-  glProgramUniform1i(program_.id(), program_.uniform("u_samples"), samples);
-  glProgramUniform1ui(program_.id(), program_.uniform("u_seed"), settings.seed);
-  glProgramUniform1i(program_.id(), program_.uniform("u_light_vertices"), light_vertices_);
+  program_.set("u_size", settings.size);
+  program_.set("u_samples", samples);
+  program_.set("u_seed", settings.seed);
+  program_.set("u_light_vertices", light_vertices_);
   visible_samples_ = gl::Query(GL_SAMPLES_PASSED);
   pixels_.resize(std::size_t(settings.size) * settings.size);
 }
@@ -164,8 +158,8 @@ LightCoverageSampler::View LightCoverageSampler::viewFrom(const glm::dvec3& x) c
 void LightCoverageSampler::draw(const View& view, std::uint32_t point) {
   program_.use();
   const glm::vec3 x(view.x);
-  glProgramUniform3fv(program_.id(), program_.uniform("u_point_position"), 1, &x[0]);
-  glProgramUniform1ui(program_.id(), program_.uniform("u_point"), point);
+  program_.set("u_point_position", x);
+  program_.set("u_point", point);
   triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kCoverageTrianglesBinding);
   vertex_array_.bind();
   if (settings_.scheme != CoverageScheme::kOcclusionQuery) {
@@ -178,20 +172,18 @@ void LightCoverageSampler::draw(const View& view, std::uint32_t point) {
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(coverage_->framebuffer().id(), GL_DEPTH, 0, &far_depth);
   coverage_->framebuffer().bind();
-  glViewport(0, 0, settings_.size, settings_.size);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_TEST);
-  glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
+  // Depth alone: the occluders' written, then the light's tested against it.
+  constexpr std::array<bool, 4> kNoColor = {false, false, false, false};
+  const gl::PipelineScope occluder_state(
+      {.depth_test = GL_LESS,
+       .color_write = kNoColor,
+       .viewport = gl::PixelRect{0, 0, settings_.size, settings_.size}});
   if (occluder_vertices_ > 0) gl::drawArrays(GL_TRIANGLES, light_vertices_, occluder_vertices_);
-  glDepthMask(GL_FALSE);
+  const gl::PipelineScope light_state(
+      {.depth_test = GL_LESS, .depth_write = false, .color_write = kNoColor});
   glBeginQuery(GL_SAMPLES_PASSED, visible_samples_.id());
   gl::drawArrays(GL_TRIANGLES, 0, light_vertices_);
   glEndQuery(GL_SAMPLES_PASSED);
-  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthMask(GL_TRUE);
 }
 
 double LightCoverageSampler::weigh(const View& view, std::uint32_t point) const {

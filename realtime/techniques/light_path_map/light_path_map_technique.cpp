@@ -7,8 +7,10 @@
 #include "realtime/gl/finished_time.h"
 #include "realtime/gl/gpu_commands.h"
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/gpu_scene/gpu_scene.h"
+#include "realtime/technique_parameters.h"
 #include "realtime/techniques/light_path_map/light_path_map_shared.h"
 
 #include <fmt/format.h>
@@ -31,7 +33,7 @@ LightPathMapSettings settingsFrom(const ParameterValues& p) {
   s.clusters = p.integer("clusters");
   s.kmeans = p.text("clustering") == "kmeans";
   s.panes_used = p.integer("panes_used");
-  s.atlas_resolution = std::stoi(p.text("atlas"));
+  s.atlas_resolution = p.integer("atlas");
   s.vpl_shadow_map_size = p.integer("vpl_shadow_map_size");
   s.moving_light = p.text("motion") == "light";
   s.indirect_only = p.text("output") == "indirect";
@@ -90,10 +92,6 @@ scene::PathClass LightPathMapTechnique::pathClass() const {
 }
 
 void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height) {
-  if (!services_.ray_caster)
-    throw InputError(
-        "technique 'light_path_map' traces its light paths with the harness's ray caster, which "
-        "this caller did not lend; run it through `gibench render` or `gibench run`");
   scene_ = &scene;
   width_ = width;
   height_ = height;
@@ -133,9 +131,8 @@ void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height
   preprocessing_.pane_bytes = allocatedBytes(panes_);
 
   // What a frame needs.
-  lighting_.emplace(settings_.shadow, settings_.light_samples);
-  lighting_->prepare(scene);
-  gbuffer_.emplace(width, height);
+  surface_lighting_.emplace(settings_.shadow, settings_.light_samples);
+  surface_lighting_->prepare(scene, width, height);
   indirect_view_.emplace(width, height);
   uploadEntryPoints();
   indirect_ = gl::Texture::make2D(GL_RGBA32F, r, r);
@@ -224,7 +221,7 @@ void LightPathMapTechnique::uploadEntryPoints() {
   entry_framebuffer_.attachColor(0, entry_irradiance_texture_);
   entry_framebuffer_.setDrawBuffers(1);
   entry_framebuffer_.checkComplete();
-  const ShadowMaps& maps = lighting_->shadowMaps();
+  const ShadowMaps& maps = surface_lighting_->lighting().shadowMaps();
   auto pass = [&](LightSampleKind kind) {
     gl::FullScreenPass p("realtime/techniques/light_path_map/entry_irradiance.frag.glsl",
                          maps.defines(kind));
@@ -237,8 +234,8 @@ void LightPathMapTechnique::uploadEntryPoints() {
 
 void LightPathMapTechnique::render(Frame& frame) {
   gl::PassProfiler& profiler = frame.profiler;
-  lighting_->setLightOffset(settings_.moving_light ? movingLightOffset(*scene_, frame)
-                                                   : fixed_light_offset_);
+  surface_lighting_->lighting().setLightOffset(
+      settings_.moving_light ? movingLightOffset(*scene_, frame) : fixed_light_offset_);
   const float zero[4] = {0, 0, 0, 0};
   glClearTexImage(entry_irradiance_texture_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   const auto weigh = [&](const ShadowMaps& maps) {
@@ -249,30 +246,26 @@ void LightPathMapTechnique::render(Frame& frame) {
     maps.bindForLookup(p.program());
     entry_position_.bind(gpu::kEntryPositionUnit);
     entry_normal_.bind(gpu::kEntryNormalUnit);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
     entry_framebuffer_.bind();
-    glViewport(0, 0, entry_side_, entry_side_);
+    const gl::PipelineScope adding({
+        .blend = gl::kAdditiveBlend,
+        .viewport = gl::PixelRect{0, 0, entry_side_, entry_side_},
+    });
     p.draw();
-    glDisable(GL_BLEND);
   };
-  std::vector<LitView> views;
+  // output=indirect weighs the panes by the direct light without drawing it.
+  const RenderTarget* camera = nullptr;
   if (!settings_.indirect_only) {
-    gbuffer_->render(*scene_, &profiler);
-    lighting_->writeEmission(*scene_, *gbuffer_, frame.target, profiler);
-    views.push_back({&*gbuffer_, &frame.target});
+    surface_lighting_->drawSurfaces(*scene_, frame.target, profiler);
+    camera = &frame.target;
   }
-  lighting_->addDirect(*scene_, views, profiler, weigh);
+  surface_lighting_->addDirect(*scene_, camera, profiler, {}, weigh);
   renderIndirect(profiler);
   auto pass = profiler.pass(kCompositePass);
   frame.target.bind();
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
+  const gl::PipelineScope adding({.blend = gl::kAdditiveBlend});
   indirect_view_->color().bind(gpu::kIndirectUnit);
   composite_pass_.draw();
-  glDisable(GL_BLEND);
 }
 
 // The clusters' weights from the entry points' irradiance (read back, as the book does, to choose
@@ -322,11 +315,8 @@ void LightPathMapTechnique::renderIndirect(gl::PassProfiler& profiler) {
     auto pass = profiler.pass(kIndirectAtlasPass);
     const int r = settings_.atlas_resolution;
     indirect_framebuffer_.bind();
-    glViewport(0, 0, r, r);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    combine_pass_.use();
-    glUniform1i(combine_pass_.program().uniform("u_selected_count"), selected_count_);
+    const gl::PipelineScope state({.viewport = gl::PixelRect{0, 0, r, r}});
+    combine_pass_.program().set("u_selected_count", selected_count_);
     panes_.bind(gpu::kPanesUnit);
     selected_panes_.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kSelectedPanesBinding,
                               selected_offset_, selected_bytes_);
@@ -335,12 +325,9 @@ void LightPathMapTechnique::renderIndirect(gl::PassProfiler& profiler) {
   auto pass = profiler.pass(kIndirectViewPass);
   indirect_view_->clear(0, 0, 0);
   indirect_view_->bind();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
+  const gl::PipelineScope state({.depth_test = GL_LESS});
   view_program_.use();
-  glUniform1i(view_program_.uniform("u_show_albedo"), 0);
+  view_program_.set("u_show_albedo", 0);
   scene_->bindSceneBuffers();
   atlas_->bind();
   indirect_.bind(gpu::kIndirectUnit);
@@ -372,26 +359,24 @@ std::vector<AuxiliaryImage> LightPathMapTechnique::auxiliaryImages() {
   RenderTarget dots(width_, height_);
   dots.clear(0, 0, 0);
   dots.bind();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glDisable(GL_BLEND);
-  view_program_.use();
-  glUniform1i(view_program_.uniform("u_show_albedo"), 1);
-  scene_->bindSceneBuffers();
-  atlas_->bind();
-  mesh_->draw();
-  entry_dots_program_.use();
-  glUniform1f(entry_dots_program_.uniform("u_lift"),
-              2e-3f * glm::length(scene_->boundsMax() - scene_->boundsMin()));
-  // A dot of a pixel per 320 of width: the book's figure's density at any size.
-  glUniform1f(entry_dots_program_.uniform("u_point_size"),
-              std::max(1.0f, std::round(float(width_) / 320.0f)));
-  entry_position_.bind(gpu::kEntryPositionUnit);
-  entry_normal_.bind(gpu::kEntryNormalUnit);
-  glEnable(GL_PROGRAM_POINT_SIZE);
-  dots_vertex_array_.bind();
-  gl::drawArrays(GL_POINTS, 0, GLsizei(entries_.size()));
-  glDisable(GL_PROGRAM_POINT_SIZE);
+  {
+    // The dots on the surfaces they lie on pass the depth test.
+    const gl::PipelineScope state({.depth_test = GL_LEQUAL, .program_point_size = true});
+    view_program_.use();
+    view_program_.set("u_show_albedo", 1);
+    scene_->bindSceneBuffers();
+    atlas_->bind();
+    mesh_->draw();
+    entry_dots_program_.use();
+    entry_dots_program_.set("u_lift",
+                            2e-3f * glm::length(scene_->boundsMax() - scene_->boundsMin()));
+    // A dot of a pixel per 320 of width: the book's figure's density at any size.
+    entry_dots_program_.set("u_point_size", std::max(1.0f, std::round(float(width_) / 320.0f)));
+    entry_position_.bind(gpu::kEntryPositionUnit);
+    entry_normal_.bind(gpu::kEntryNormalUnit);
+    dots_vertex_array_.bind();
+    gl::drawArrays(GL_POINTS, 0, GLsizei(entries_.size()));
+  }
   images.push_back(
       {"entry-points",
        std::to_string(entries_.size()) + " entry points over the scene (book Fig. 8.12)",
@@ -405,9 +390,7 @@ std::vector<AuxiliaryImage> LightPathMapTechnique::auxiliaryImages() {
     RenderTarget direct(width_, height_);
     direct.clear(0, 0, 0);
     gl::PassProfiler untimed;
-    gbuffer_->render(*scene_);
-    lighting_->writeEmission(*scene_, *gbuffer_, direct, untimed);
-    lighting_->addDirect(*scene_, {{&*gbuffer_, &direct}}, untimed);
+    surface_lighting_->render(*scene_, direct, untimed);
     image::Image split = direct.read();
     for (int y = 0; y < height_ / 2; ++y)
       for (int x = 0; x < width_; ++x)
@@ -440,40 +423,43 @@ TechniqueInfo lightPathMapTechniqueInfo() {
       "precomputed per entry-point cluster, weighted by the current lights every frame; "
       "output=indirect for the maps' own paths";
   info.source = "Szirmay-Kalos et al., GPU-Based Techniques for Global Illumination Effects, §8.4";
-  info.parameters = {
-      numericParameter("entry_points", ParameterType::kInteger, "4096", 1, 65536, "",
-                       "entry points sampled uniformly over the surface area (the book's 4096)"),
-      numericParameter("paths_per_entry", ParameterType::kInteger, "2", 1, 64, "",
-                       "random walks started from each entry point (the book's 2)"),
-      numericParameter("clusters", ParameterType::kInteger, "256", 1, 2048, "",
-                       "entry-point clusters by object-median kd-tree, one pane each (the book's "
-                       "256); at most entry_points"),
-      choiceParameter("clustering", "kdtree", {"kdtree", "kmeans"},
-                      "entry-point clusters: object-median kd-tree (equal sizes), or K-means from "
-                      "it over position and normal (the book's alternative)"),
-      numericParameter("panes_used", ParameterType::kInteger, "32", 1, 2048, "",
-                       "highest-weighted cluster panes summed per frame (the book's 32); at most "
-                       "clusters"),
-      choiceParameter("atlas", "256", {"64", "128", "256", "512", "1024"},
-                      "pane (atlas) resolution: exit points per side (the book's 256)"),
-      numericParameter(
-          "vpl_shadow_map_size", ParameterType::kInteger, "256", 16, 2048, "texels",
-          "shadow map of each virtual light, per cube face, while the panes are built"),
-      choiceParameter("motion", "none", {"none", "light"},
-                      "light: the lights move every frame (a circle, at rest on the last frame); "
-                      "the maps are not rebuilt"),
-      choiceParameter("output", "full", {"full", "indirect"},
-                      "full: emission + direct + indirect; indirect: the maps' paths alone (two or "
-                      "more bounces)"),
-      numericParameter("seed", ParameterType::kInteger, "0", 0, 2147483647, "",
-                       "entry points and random walks, the same every run"),
-  };
-  for (ParameterSpec& p : directLightingParameters()) info.parameters.push_back(std::move(p));
+  info.parameters = joinParameterTables(
+      {{
+           numericParameter(
+               "entry_points", ParameterType::kInteger, "4096", 1, 65536, "",
+               "entry points sampled uniformly over the surface area (the book's 4096)"),
+           numericParameter("paths_per_entry", ParameterType::kInteger, "2", 1, 64, "",
+                            "random walks started from each entry point (the book's 2)"),
+           numericParameter(
+               "clusters", ParameterType::kInteger, "256", 1, 2048, "",
+               "entry-point clusters by object-median kd-tree, one pane each (the book's "
+               "256); at most entry_points"),
+           choiceParameter(
+               "clustering", "kdtree", {"kdtree", "kmeans"},
+               "entry-point clusters: object-median kd-tree (equal sizes), or K-means from "
+               "it over position and normal (the book's alternative)"),
+           numericParameter(
+               "panes_used", ParameterType::kInteger, "32", 1, 2048, "",
+               "highest-weighted cluster panes summed per frame (the book's 32); at most "
+               "clusters"),
+           atlasParameter(256, "pane (atlas) resolution: exit points per side (the book's 256)"),
+           numericParameter(
+               "vpl_shadow_map_size", ParameterType::kInteger, "256", 16, 2048, "texels",
+               "shadow map of each virtual light, per cube face, while the panes are built"),
+           choiceParameter(
+               "motion", "none", {"none", "light"},
+               "light: the lights move every frame (a circle, at rest on the last frame); "
+               "the maps are not rebuilt"),
+           choiceParameter(
+               "output", "full", {"full", "indirect"},
+               "full: emission + direct + indirect; indirect: the maps' paths alone (two or "
+               "more bounces)"),
+           seedParameter("entry points and random walks, the same every run"),
+       },
+       SurfaceLighting::parameters()});
   PassDeclarations& passes = info.passes;
-  passes.add(passPath({kFramePass, kGBufferPass}), "what each pixel's primary ray hits");
-  DirectLighting::declarePasses(
-      passes, kFramePass,
-      {{kEntryIrradiancePass, "the light sample's irradiance at every entry point"}});
+  SurfaceLighting::declarePasses(
+      passes, {{kEntryIrradiancePass, "the light sample's irradiance at every entry point"}});
   passes.add(passPath({kFramePass, kPaneSelectionPass}),
              "entry irradiance read back; cluster weights; the highest-weighted panes chosen");
   passes.add(passPath({kFramePass, kIndirectAtlasPass}),
@@ -481,6 +467,26 @@ TechniqueInfo lightPathMapTechniqueInfo() {
   passes.add(passPath({kFramePass, kIndirectViewPass}),
              "the camera view of the indirect atlas, bilinear");
   passes.add(passPath({kFramePass, kCompositePass}), "the indirect light added into the frame");
+  info.auxiliary_images = {
+      {"indirect", "the light path map's indirect light seen by the camera (two or more bounces)"},
+      {"entry-points", "the entry points over the scene (book Fig. 8.12)"},
+      {"atlas", "indirect exit radiance per atlas texel (exit point)"},
+      {"local-and-lpm",
+       "upper half: direct + light path map; lower half: local illumination alone (book Fig. "
+       "8.13)"},
+  };
+  info.statistics = {
+      {"entry_points", "entry points sampled over the surfaces"},
+      {"clusters", "entry-point clusters, one pane each"},
+      {"virtual_lights", "path vertices of the random walks (virtual lights)"},
+      {"vpl_shadow_maps", "virtual lights rendered with a shadow map"},
+      {"pane_memory_mb", "memory of the panes"},
+      {"prepare_ray_caster_ms", "time to build the ray caster's BVH"},
+      {"prepare_light_tracing_ms", "time to trace the random walks"},
+      {"prepare_lpm_ms", "time to build the light path maps"},
+      {"atlas_texels", "atlas texels covered by a surface"},
+  };
+  info.needs = {TechniqueNeed::kRayCaster};
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<LightPathMapTechnique>(values);
   };

@@ -17,7 +17,7 @@
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/fullscreen_pass.h"
 #include "realtime/gl/stream_buffer.h"
-#include "realtime/lighting/direct_lighting.h"
+#include "realtime/lighting/surface_lighting.h"
 #include "realtime/render_target.h"
 #include "realtime/technique.h"
 #include "realtime/techniques/light_path_map/entry_points.h"
@@ -109,8 +109,7 @@ class LightPathMapTechnique final : public Technique {
   std::vector<int> cluster_of_entry_;
   std::vector<int> cluster_size_;
   LightPathMapPreprocessing preprocessing_;
-  std::optional<DirectLighting> lighting_;
-  std::optional<GBuffer> gbuffer_;
+  std::optional<SurfaceLighting> surface_lighting_;
   std::optional<RenderTarget> indirect_view_;
   int entry_side_ = 0;
   gl::Texture entry_position_, entry_normal_, entry_irradiance_texture_;

@@ -102,17 +102,26 @@ TechniqueInfo sphericalBillboardsTechniqueInfo() {
   info.source =
       "Szirmay-Kalos et al., GPU-Based Techniques for Global Illumination Effects, "
       "§9.3 (spherical billboards) and §9.4 (illuminating participating media)";
-  info.parameters = {numericParameter(
-      "sky_directions", ParameterType::kInteger, "16", 0, 1024, "directions",
-      "directions over the sphere whose transmittance weighs the sky's single scattering "
-      "(0: the medium scatters no sky light)")};
-  const ParameterTable shared = ParticleCompositor::parameters();
-  info.parameters.insert(info.parameters.end(), shared.begin(), shared.end());
+  info.parameters = joinParameterTables(
+      {{numericParameter("sky_directions", ParameterType::kInteger, "16", 0, 1024, "directions",
+                         "directions over the sphere whose transmittance weighs the sky's single "
+                         "scattering (0: the medium scatters no sky light)")},
+       ParticleCompositor::parameters()});
   ParticleCompositor::declarePasses(info.passes);
   info.passes.add(passPath({kFramePass, kVolumeShadowPass}),
                   "each particle's transmittance towards the lights and the sky directions "
                   "through the rest of the medium");
-  info.requires_medium = true;
+  info.auxiliary_images = {
+      {"clipping",
+       "|planar − spherical billboards| over its largest value: where classic billboards clip "
+       "(book Figs. 9.3, 9.8)"},
+  };
+  info.statistics = {
+      {"particles", "particles of the medium"},
+      {"lights", "directional lights"},
+      {"sky_directions", "directions whose transmittance weighs the sky"},
+  };
+  info.needs = {TechniqueNeed::kMedium};
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<SphericalBillboardsTechnique>(values);
   };

@@ -1,5 +1,6 @@
 #include "realtime/techniques/stochastic_radiosity/shooter_visibility.h"
 
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 
@@ -35,9 +36,9 @@ ShooterVisibility::ShooterVisibility(ShooterProjection projection, int map_size,
                                "realtime/techniques/stochastic_radiosity/visibility.geom.glsl",
                                "realtime/techniques/stochastic_radiosity/visibility.frag.glsl"},
                               defines());
-  glProgramUniform1f(program_.id(), program_.uniform("u_near"), near_);
-  glProgramUniform1f(program_.id(), program_.uniform("u_far"), far_);
-  glProgramUniform1f(program_.id(), program_.uniform("u_shooter_lift"), lift_);
+  program_.set("u_near", near_);
+  program_.set("u_far", far_);
+  program_.set("u_shooter_lift", lift_);
 }
 
 std::string ShooterVisibility::defines() const {
@@ -46,20 +47,19 @@ std::string ShooterVisibility::defines() const {
 
 void ShooterVisibility::render(const atlas::AtlasMesh& mesh) const {
   program_.use();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // every surface occludes, whichever side faces the shooter
-  glDisable(GL_BLEND);
+  // Every surface occludes, whichever side faces the shooter (no culling). The hemisphere's back
+  // half-space, or the rows above a side face's half, are clipped.
+  const gl::PipelineScope state({
+      .depth_test = GL_LESS,
+      .clip_distances = 1,
+      .viewport = gl::PixelRect{0, 0, size_, size_},
+  });
   const float clear_distance[4] = {kNothingDrawn, 0, 0, 0};
   const float clear_depth = 1.0f;
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear_distance);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &clear_depth);
   framebuffer_.bind();
-  glViewport(0, 0, size_, size_);
-  // The hemisphere's back half-space, or the rows above a side face's half, are clipped.
-  glEnable(GL_CLIP_DISTANCE0);
   mesh.draw(projection_ == ShooterProjection::kHemicube ? 5 : 1);
-  glDisable(GL_CLIP_DISTANCE0);
 }
 
 void ShooterVisibility::bindForLookup() const {
@@ -67,8 +67,8 @@ void ShooterVisibility::bindForLookup() const {
 }
 
 void ShooterVisibility::setLookupConstants(const gl::Program& program) const {
-  glProgramUniform1i(program.id(), program.uniform("u_map_size"), size_);
-  glProgramUniform1f(program.id(), program.uniform("u_shooter_lift"), lift_);
+  program.set("u_map_size", size_);
+  program.set("u_shooter_lift", lift_);
 }
 
 }  // namespace gib::rt

@@ -2,9 +2,11 @@
 
 #include "common/splitmix.h"
 #include "realtime/gl/pass_profiler.h"
+#include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
+#include "realtime/technique_parameters.h"
 #include "realtime/techniques/stochastic_radiosity/light_injection.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_shared.h"
 
@@ -18,7 +20,7 @@ namespace {
 
 StochasticRadiositySettings settingsFrom(const ParameterValues& p) {
   StochasticRadiositySettings s;
-  s.atlas_resolution = std::stoi(p.text("atlas"));
+  s.atlas_resolution = p.integer("atlas");
   s.selection = p.text("selection") == "cpu" ? SelectionMethod::kCpu : SelectionMethod::kGpu;
   s.projection = p.text("projection") == "hemisphere" ? ShooterProjection::kHemisphere
                                                       : ShooterProjection::kHemicube;
@@ -82,10 +84,9 @@ void StochasticRadiosityTechnique::prepare(const GpuScene& scene, int /*width*/,
                                     visibility_->defines());
   const gl::Program& update = update_pass_.program();
   visibility_->setLookupConstants(update);
-  glProgramUniform1f(update.id(), update.uniform("u_texel_area"),
-                     layout_.texels_per_unit > 0
-                         ? 1.0f / (layout_.texels_per_unit * layout_.texels_per_unit)
-                         : 0.0f);
+  update.set("u_texel_area", layout_.texels_per_unit > 0
+                                 ? 1.0f / (layout_.texels_per_unit * layout_.texels_per_unit)
+                                 : 0.0f);
   view_program_ = gl::buildProgram(
       {{GL_VERTEX_SHADER, "realtime/atlas/atlas_view.vert.glsl"},
        {GL_FRAGMENT_SHADER, "realtime/techniques/stochastic_radiosity/view.frag.glsl"}});
@@ -102,11 +103,8 @@ void StochasticRadiosityTechnique::runUpdatePass() {
   const int r = settings_.atlas_resolution;
   const int next = 1 - current_;
   update_[std::size_t(next)].bind();
-  glViewport(0, 0, r, r);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  update_pass_.use();
-  glUniform1f(update_pass_.program().uniform("u_iteration"), float(std::max(iteration_, 1)));
+  const gl::PipelineScope state({.viewport = gl::PixelRect{0, 0, r, r}});
+  update_pass_.program().set("u_iteration", float(std::max(iteration_, 1)));
   atlas_->bind();
   source_.bind(gpu::kRadiositySourceUnit);
   reflected_[std::size_t(current_)].bind(gpu::kRadiosityReflectedUnit);
@@ -143,10 +141,8 @@ void StochasticRadiosityTechnique::render(Frame& frame) {
   const scene::Rgb sky = scene_->scene().sky_radiance;
   frame.target.clear(sky.r, sky.g, sky.b);  // what rays that leave the scene see
   frame.target.bind();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
+  // The nearest surface wins; both sides of a surface are drawn.
+  const gl::PipelineScope state({.depth_test = GL_LESS});
   view_program_.use();
   scene_->bindSceneBuffers();
   atlas_->bind();
@@ -198,8 +194,8 @@ TechniqueInfo stochasticRadiosityTechniqueInfo() {
       "Barsi & Jakab, Stream Processing in Global Illumination; Szirmay-Kalos et al., GPU-Based "
       "Techniques for Global Illumination Effects, §7.1";
   info.parameters = {
-      choiceParameter("atlas", "128", {"64", "128", "256", "512", "1024"},
-                      "radiance atlas texels per side (the book's 128; the paper's 512 and 1024)"),
+      atlasParameter(128,
+                     "radiance atlas texels per side (the book's 128; the paper's 512 and 1024)"),
       choiceParameter("selection", "gpu", {"gpu", "cpu"},
                       "texel selection: summed pyramid and hierarchical descent on the GPU, or "
                       "read-back and linear search on the CPU (the paper's first version)"),
@@ -211,8 +207,7 @@ TechniqueInfo stochasticRadiosityTechniqueInfo() {
       numericParameter("tessellation", ParameterType::kInteger, "0", 0, 5, "levels",
                        "split every triangle into 4 per level for the technique's draws (the "
                        "atlas is unchanged)"),
-      numericParameter("seed", ParameterType::kInteger, "0", 0, 2147483647, "",
-                       "random sequence of the texel selections, the same every run"),
+      seedParameter("random sequence of the texel selections, the same every run"),
   };
   PassDeclarations& passes = info.passes;
   passes.add(passPath({kFramePass, kViewPass}),
@@ -226,6 +221,13 @@ TechniqueInfo stochasticRadiosityTechniqueInfo() {
              "every texel in texture space: transfer and the running average of eq. (2)");
   passes.add(passPath({kIterationPass, kMipmapPass}),
              "the power pyramid for the next selection (GPU selection only)");
+  info.auxiliary_images = {
+      {"atlas", "radiance atlas (emission + injected direct light + reflected estimate)"},
+  };
+  info.statistics = {
+      {"vertices", "vertices drawn per view of the scene"},
+      {"atlas_texels", "atlas texels covered by a surface"},
+  };
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<StochasticRadiosityTechnique>(values);
   };

@@ -47,9 +47,9 @@ void TexelSelection::buildPyramid() const {
     for (int k = 0; k < gpu::kPyramidLevelsPerPass; ++k)  // unused units: the top, not written
       bindLevel(GLuint(gpu::kImageDestinationUnit + k), power_,
                 std::min(finer + 1 + k, levels_ - 1), GL_WRITE_ONLY);
-    glUniform1i(sum_.uniform("u_levels"), count);
+    sum_.set("u_levels", count);
     const int size = std::max(1, resolution_ >> (finer + count));
-    glUniform2i(sum_.uniform("u_top_size"), size, size);
+    sum_.set("u_top_size", glm::ivec2(size, size));
     const GLuint groups = GLuint((size + gpu::kPyramidGroupSize - 1) / gpu::kPyramidGroupSize);
     gl::dispatchCompute(groups, groups, 1);
   }
@@ -71,8 +71,8 @@ void TexelSelection::selectOnGpu(const std::vector<float>& u) {
   shooters_.update(0, start.size() * sizeof(gpu::Shooter), start.data());
   shooters_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kShootersBinding);
   descend_.use();
-  glUniform1i(descend_.uniform("u_count"), GLint(u.size()));
-  glUniform1i(descend_.uniform("u_top"), levels_ - 1);
+  descend_.set("u_count", int(u.size()));
+  descend_.set("u_top", levels_ - 1);
   power_.bind(gpu::kRadiosityPowerUnit);
   const GLuint groups = GLuint((u.size() + gpu::kDescentGroupSize - 1) / gpu::kDescentGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
