@@ -36,6 +36,8 @@ import sys
 import time
 import tomllib
 
+import toml_writer
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SUITE_DIRS = ("suites", os.path.join("suites", "figures"))
 SIDES = ("before", "after")
@@ -182,44 +184,6 @@ def shrink_suite(suite, limits):
     return notes
 
 
-def toml_key(key):
-    return key if re.fullmatch(r"[A-Za-z0-9_-]+", key) else json.dumps(key, ensure_ascii=False)
-
-
-def toml_value(value):
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, (int, float)):
-        return repr(value)
-    if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False)
-    if isinstance(value, list):
-        return "[" + ", ".join(toml_value(v) for v in value) + "]"
-    if isinstance(value, dict):
-        return "{ " + ", ".join(f"{toml_key(k)} = {toml_value(v)}" for k, v in value.items()) + " }"
-    raise TypeError(f"no TOML for {value!r}")
-
-
-def is_table_array(value):
-    return isinstance(value, list) and value and all(isinstance(v, dict) for v in value)
-
-
-def toml_table(path, table, lines, element):
-    """Writes the members of a table; the tables inside an array element inline (a case's `set`,
-    `reference`), those inside a top-level table under their own header ([defaults.reference])."""
-    for key, value in table.items():
-        if not is_table_array(value) and not (isinstance(value, dict) and not element):
-            lines.append(f"{toml_key(key)} = {toml_value(value)}")
-    for key, value in table.items():
-        if isinstance(value, dict) and not element:
-            lines += ["", f"[{path}{toml_key(key)}]"]
-            toml_table(f"{path}{toml_key(key)}.", value, lines, element)
-        elif is_table_array(value):
-            for item in value:
-                lines += ["", f"[[{path}{toml_key(key)}]]"]
-                toml_table(f"{path}{toml_key(key)}.", item, lines, True)
-
-
 def limits_line(limits):
     return (f"size <= {limits.size}, reference spp <= {limits.spp}, frames <= {limits.frames}, "
             f"warmup <= {limits.warmup}")
@@ -238,7 +202,7 @@ def shrunk_suites(suites, limits):
         notes = [f"{name}: {note}" for note in shrink_suite(suite, limits)]
         lines = [f"# {os.path.relpath(path, REPO)} shrunk by scripts/compare-suite-metrics.py",
                  f"# {limits_line(limits)}"]
-        toml_table("", suite, lines, False)
+        toml_writer.table_lines("", suite, lines)
         shrunk.append((name, "\n".join(lines) + "\n", notes))
     return shrunk, skipped
 
