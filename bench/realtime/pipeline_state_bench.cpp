@@ -39,17 +39,7 @@ BENCHMARK(BM_RawStateCalls);
 
 void BM_PipelineScope(benchmark::State& state) {
   glContext();
-  const rt::gl::PipelineState lit{.depth_test = GL_LEQUAL,
-                                  .depth_write = true,
-                                  .blend = rt::gl::kAdditiveBlend,
-                                  .cull_face = std::nullopt,
-                                  .color_write = {true, true, true, true},
-                                  .polygon_offset = std::nullopt,
-                                  .clip_distances = 0,
-                                  .program_point_size = false,
-                                  .logic_op = std::nullopt,
-                                  .scissor = std::nullopt,
-                                  .viewport = std::nullopt};
+  const rt::gl::PipelineState lit{.depth_test = GL_LEQUAL, .blend = rt::gl::kAdditiveBlend};
   for (auto _ : state) {
     const rt::gl::PipelineScope scope(lit);
     benchmark::DoNotOptimize(&scope);

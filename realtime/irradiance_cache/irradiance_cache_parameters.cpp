@@ -26,6 +26,17 @@ ParameterTable irradianceCacheParameters() {
   };
 }
 
+std::vector<DeclaredOutput> irradianceCacheStatistics(std::vector<DeclaredOutput> own) {
+  std::vector<DeclaredOutput> statistics = {
+      {"records", "records in the cache"},
+      {"record_rounds", "rounds of the record traversal"},
+      {"records_ms", "time to compute the records"},
+      {"records_per_second", "records computed per second"},
+  };
+  statistics.insert(statistics.end(), own.begin(), own.end());
+  return statistics;
+}
+
 RecordPlacementSettings recordPlacementSettings(const ParameterValues& p) {
   RecordPlacementSettings settings;
   settings.accuracy = float(p.number("accuracy"));

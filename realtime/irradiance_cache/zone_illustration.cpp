@@ -80,13 +80,17 @@ image::Image zoneIllustration(const SurfaceImage& surfaces, const CameraTransfor
   return picture;
 }
 
+DeclaredOutput zonesImageDeclaration() {
+  return {"zones",
+          "the records' zones of influence: each pixel in the colour of the record that weighs "
+          "most there, records' pixels white"};
+}
+
 AuxiliaryImage zonesAuxiliaryImage(const SurfaceImage& surfaces, const CameraTransform& camera,
                                    std::span<const gpu::IrradianceRecord> records, float accuracy) {
-  return {
-      "zones",
-      "the records' zones of influence: each pixel in the colour of the record that weighs most "
-      "there, records' pixels white",
-      zoneIllustration(surfaces, camera, records, accuracy)};
+  DeclaredOutput zones = zonesImageDeclaration();
+  return {std::move(zones.name), std::move(zones.description),
+          zoneIllustration(surfaces, camera, records, accuracy)};
 }
 
 }  // namespace gib::rt

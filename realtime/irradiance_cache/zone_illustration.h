@@ -15,8 +15,9 @@ namespace gib::rt {
 image::Image zoneIllustration(const SurfaceImage& surfaces, const CameraTransform& camera,
                               std::span<const gpu::IrradianceRecord> records, float accuracy);
 
-// The illustration as both techniques' auxiliary image "zones".
+// The illustration as both techniques' auxiliary image "zones", and its declaration.
 AuxiliaryImage zonesAuxiliaryImage(const SurfaceImage& surfaces, const CameraTransform& camera,
                                    std::span<const gpu::IrradianceRecord> records, float accuracy);
+DeclaredOutput zonesImageDeclaration();
 
 }  // namespace gib::rt

@@ -55,6 +55,13 @@ ParameterTable ParticleCompositor::parameters() {
        SurfaceLighting::parameters()});
 }
 
+std::vector<DeclaredOutput> ParticleCompositor::statistics(std::vector<DeclaredOutput> own) {
+  std::vector<DeclaredOutput> statistics = {{"particles", "particles of the medium"},
+                                            {"lights", "directional lights"}};
+  statistics.insert(statistics.end(), own.begin(), own.end());
+  return statistics;
+}
+
 void ParticleCompositor::declarePasses(PassDeclarations& passes) {
   SurfaceLighting::declarePasses(passes);
   passes.add(passPath({kFramePass, kParticleShadingPass}),

@@ -47,6 +47,9 @@ class ParticleCompositor {
   static ParameterTable parameters();
   // The frame passes: the surfaces', kParticleShadingPass, kParticleSortPass, kBillboardPass.
   static void declarePasses(PassDeclarations& passes);
+  // The statistics both particle techniques report of their medium (particles, lights), then
+  // the technique's own.
+  static std::vector<DeclaredOutput> statistics(std::vector<DeclaredOutput> own);
 
   // Builds the programs for `scene` and `medium`, which must outlive the compositor's frames.
   void prepare(const GpuScene& scene, const ParticleMedium& medium);

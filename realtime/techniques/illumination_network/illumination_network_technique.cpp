@@ -189,15 +189,13 @@ TechniqueInfo illuminationNetworkTechniqueInfo() {
                   "J = E + a·Σ_d I p / Σ_d p: each particle's radiance towards each direction");
   info.passes.add(passPath({kIterationPass, kTransportPass}),
                   "I gathered along each particle's chain in V, the sky at its end");
-  info.statistics = {
-      {"particles", "particles of the medium"},
+  info.statistics = ParticleCompositor::statistics({
       {"directions", "sample directions shared by all particles"},
-      {"lights", "directional lights"},
       {"network_mb", "memory of the network (V, E, J, I per particle and direction)"},
       {"mean_chain_length", "mean particles along a direction's visibility chain"},
       {"prepare_visibility_ms", "time to build the visibility network"},
       {"prepare_emission_ms", "time to compute the first-order emission"},
-  };
+  });
   info.needs = {TechniqueNeed::kMedium};
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IlluminationNetworkTechnique>(values);

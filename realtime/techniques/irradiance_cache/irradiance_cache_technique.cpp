@@ -355,19 +355,15 @@ TechniqueInfo irradianceCacheTechniqueInfo() {
                   "CPU: the octree looked up at every pixel");
   info.passes.add(passPath({kFramePass, kUploadPass}), "the image copied into the frame");
   info.auxiliary_images = {
-      {"zones", "each record's zone of influence over the image"},
+      zonesImageDeclaration(),
       {"irradiance", "the interpolated irradiance E (before ρ/π)"},
   };
-  info.statistics = {
-      {"records", "records in the cache"},
-      {"record_rounds", "rounds of the record traversal"},
+  info.statistics = irradianceCacheStatistics({
       {"rays_per_record", "hemisphere rays traced per record"},
-      {"records_ms", "time to compute the records"},
-      {"records_per_second", "records computed per second"},
       {"surfaces_ms", "time of the primary rays and their direct light"},
       {"threads", "worker threads used"},
       {"prepare_ray_caster_ms", "time to build the ray caster's BVH"},
-  };
+  });
   info.needs = {TechniqueNeed::kRayCaster};
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IrradianceCacheTechnique>(values);

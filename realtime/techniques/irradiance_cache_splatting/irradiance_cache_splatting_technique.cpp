@@ -260,20 +260,16 @@ TechniqueInfo irradianceCacheSplattingTechniqueInfo() {
   info.passes.add(passPath({kFramePass, kNormalizePass}),
                   "Σ w·E / Σ w times ρ/π added to the frame");
   info.auxiliary_images = {
-      {"zones", "each record's zone of influence over the image"},
+      zonesImageDeclaration(),
       {"irradiance", "the splatted irradiance E = Σ w·E_k / Σ w (before ρ/π)"},
   };
-  info.statistics = {
-      {"records", "records in the cache"},
-      {"record_rounds", "rounds of the record traversal"},
+  info.statistics = irradianceCacheStatistics({
       {"pixels_per_record", "pixels of each record's sampling images"},
       {"records_per_batch", "records whose hemispheres are rasterized at once"},
-      {"records_ms", "time to compute the records"},
       {"record_detection_ms", "CPU time finding the pixels that need a record"},
       {"record_sampling_ms", "time of the records' GPU hemisphere sampling"},
-      {"records_per_second", "records computed per second"},
       {"prepare_atlas_ms", "time to build the directly lit radiance atlas"},
-  };
+  });
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<IrradianceCacheSplattingTechnique>(values);
   };

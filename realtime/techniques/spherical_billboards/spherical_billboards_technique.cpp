@@ -116,11 +116,8 @@ TechniqueInfo sphericalBillboardsTechniqueInfo() {
        "|planar − spherical billboards| over its largest value: where classic billboards clip "
        "(book Figs. 9.3, 9.8)"},
   };
-  info.statistics = {
-      {"particles", "particles of the medium"},
-      {"lights", "directional lights"},
-      {"sky_directions", "directions whose transmittance weighs the sky"},
-  };
+  info.statistics = ParticleCompositor::statistics(
+      {{"sky_directions", "directions whose transmittance weighs the sky"}});
   info.needs = {TechniqueNeed::kMedium};
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<SphericalBillboardsTechnique>(values);
