@@ -20,13 +20,14 @@ const std::vector<BuiltinScene>& registry() {
   static const std::vector<BuiltinScene> scenes = {
       {{"cornell",
         "the Cornell box as published by the Cornell Program of Computer Graphics (mm, spectral "
-        "reflectances converted to Rec.709)",
+        "reflectances converted to Rec.709); with a mirror and a glass sphere in place of the "
+        "blocks, and a spot light in place of the area light, as variants",
         cornellParameters()},
        &makeCornellBox},
       {{"furnace",
-        "inside a closed sphere with albedo 0.5 and emission 0.5: every pixel's exact radiance "
-        "is 1.0",
-        {}},
+        "inside a closed sphere with albedo 0.5 and emission 0.5, optionally around a perfect "
+        "mirror or lossless glass sphere: every pixel's exact radiance is 1.0",
+        furnaceParameters()},
        &makeFurnace},
       {{"chamber",
         "procedural marble chamber (vaulted hall, arcades, spot light; ~3 400 triangles at "

@@ -28,6 +28,7 @@ Scene loadScene(std::string_view name_or_path, const std::vector<std::string>& p
 Scene makeCornellBox(const ParameterValues& parameters);
 ParameterTable cornellParameters();
 Scene makeFurnace(const ParameterValues& parameters);
+ParameterTable furnaceParameters();
 Scene makeChamber(const ParameterValues& parameters);
 ParameterTable chamberParameters();
 Scene makeCloud(const ParameterValues& parameters);

@@ -1,15 +1,21 @@
 // The Cornell box as published by the Cornell University Program of Computer Graphics,
 // "Cornell Box Data", https://www.graphics.cornell.edu/online/box/data.html: geometry in mm,
 // camera, the 130 × 105 mm light, the short and the tall block, and measured spectra (see
-// cornell_spectra.cpp) converted to linear Rec.709 by spectrum.cpp.
+// cornell_spectra.cpp) converted to linear Rec.709 by spectrum.cpp; and its variants with a
+// mirror and a glass sphere in place of the blocks, and with a spot light in place of the area
+// light (docs/scenes.md).
 #include "scene/builtin_scenes.h"
 #include "scene/cornell_spectra.h"
 #include "scene/mesh_builder.h"
+#include "scene/metals.h"
 #include "scene/spectrum.h"
 
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace gib::scene {
 
@@ -19,6 +25,26 @@ namespace {
 // surfaces from being coplanar (which would make which one a ray hits arbitrary) while changing
 // the illumination by far less than any error we measure.
 constexpr float kLightY = 548.8f - 0.1f;
+// The light's published corners span x 213–343 and z 227–332.
+constexpr float kLightArea = 130.0f * 105.0f;
+
+// The spheres of the classic "Cornell box with spheres" (the book's colour box, Figs. 6.2 and
+// 6.6): a mirror sphere at the back on the red wall's side and a glass sphere at the front on the
+// green wall's side, both of radius 100 mm standing on the floor. Both lie wholly in the camera's
+// view and clear of the walls (the mirror 70 mm from the red wall and 79 mm from the back wall,
+// the glass 85 mm from the green wall and 70 mm behind the opening), and the glass sphere's
+// caustic under the ceiling light falls on the floor in front of it, about 80 % of it in view
+// (rays traced from the light's centre through the sphere, ior 1.5).
+constexpr float kSphereRadius = 100.0f;
+constexpr glm::vec3 kMirrorCentre{380.0f, kSphereRadius, 380.0f};
+constexpr glm::vec3 kGlassCentre{185.0f, kSphereRadius, 170.0f};
+// Fine enough that the facets' silhouette deviates from the sphere by r·(1 − cos(π/128)), 0.03 mm,
+// under a tenth of a pixel at the default 512².
+constexpr int kSphereRings = 64;
+constexpr int kSphereSegments = 128;
+
+// The spot light (light=spot) 1 mm under the ceiling, at the area light's centre.
+constexpr glm::vec3 kSpotPosition{278.0f, 548.8f - 1.0f, 279.5f};
 
 std::uint32_t addMaterial(Scene& scene, std::string name, Rgb diffuse, Rgb emission = Rgb(0.0f)) {
   Material m;
@@ -43,13 +69,51 @@ void addBlock(Mesh& mesh, const glm::vec3 (&quads)[5][4]) {
   for (const auto& q : quads) appendQuad(mesh, q[0], q[1], q[2], q[3]);
 }
 
+// The spheres that `spheres` asks for, smooth-shaded.
+void addSpheres(Scene& scene, const ParameterValues& parameters) {
+  const std::string& spheres = parameters.text("spheres");
+  auto addSphere = [&](std::string name, Material material, glm::vec3 centre) {
+    scene.materials.push_back(std::move(material));
+    Mesh& mesh =
+        addMesh(scene, std::move(name), static_cast<std::uint32_t>(scene.materials.size() - 1));
+    appendSphere(mesh, centre, kSphereRadius, kSphereRings, kSphereSegments, /*inward=*/false,
+                 SphereShading::kSmooth);
+  };
+  if (spheres == "mirror" || spheres == "mirror_glass")
+    addSphere("mirror_sphere", mirrorMaterial("mirror", *findMetal(parameters.text("metal"))),
+              kMirrorCentre);
+  if (spheres == "glass" || spheres == "mirror_glass") {
+    Material glass;
+    glass.name = "glass";
+    glass.type = MaterialType::kGlass;
+    glass.ior = static_cast<float>(parameters.number("ior"));
+    const std::vector<double> absorption = parameters.vector3("absorption");
+    glass.absorption = Rgb(float(absorption[0]), float(absorption[1]), float(absorption[2]));
+    addSphere("glass_sphere", glass, kGlassCentre);
+  }
+}
+
 }  // namespace
 
 ParameterTable cornellParameters() {
   return {
       booleanParameter("blocks", true,
                        "the short and the tall block (false: the empty box, whose walls alone "
-                       "make a simpler test scene)"),
+                       "make a simpler test scene); only with spheres=none, since the spheres "
+                       "take the blocks' place"),
+      choiceParameter("spheres", "none", {"none", "mirror", "glass", "mirror_glass"},
+                      "a mirror sphere (back, red side) and/or a glass sphere (front, green "
+                      "side), radius 100 mm, on the floor in place of the blocks"),
+      choiceParameter("metal", "silver", metalNames(),
+                      "the mirror sphere's metal (docs/scenes.md, \"Metals\"; perfect: R = 1)"),
+      numericParameter("ior", ParameterType::kNumber, "1.5", kMinGlassIor, kMaxGlassIor, "",
+                       "the glass sphere's index of refraction"),
+      numericParameter("absorption", ParameterType::kVector3, "0,0,0", 0, 1, "1/mm",
+                       "the glass's Beer-Lambert absorption coefficient per channel"),
+      choiceParameter("light", "area", {"area", "spot"},
+                      "the ceiling light, or in its place a spot light 1 mm under the ceiling "
+                      "pointing down (90° cone, cos fall-off: the same power and distribution "
+                      "from a point), whose caustics only light paths reach"),
   };
 }
 
@@ -65,9 +129,8 @@ Scene makeCornellBox(const ParameterValues& parameters) {
   const std::uint32_t white_id = addMaterial(scene, "white", white);
   const std::uint32_t green_id = addMaterial(scene, "green", reflectanceToRec709(cornellGreen()));
   const std::uint32_t red_id = addMaterial(scene, "red", reflectanceToRec709(cornellRed()));
-  // The page gives the light's emission, not its reflectance; we give it the white paint's.
-  const std::uint32_t light_id =
-      addMaterial(scene, "light", white, emissionToRec709(cornellLight()));
+  const Rgb emission = emissionToRec709(cornellLight());
+  const bool area_light = parameters.text("light") == "area";
 
   appendQuad(addMesh(scene, "floor", white_id), {552.8f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f},
              {0.0f, 0.0f, 559.2f}, {549.6f, 0.0f, 559.2f});
@@ -79,9 +142,25 @@ Scene makeCornellBox(const ParameterValues& parameters) {
              {0.0f, 548.8f, 0.0f}, {0.0f, 548.8f, 559.2f});
   appendQuad(addMesh(scene, "left_wall", red_id), {552.8f, 0.0f, 0.0f}, {549.6f, 0.0f, 559.2f},
              {556.0f, 548.8f, 559.2f}, {556.0f, 548.8f, 0.0f});
-  // Wound so that the emitting side faces down, into the box.
-  appendQuad(addMesh(scene, "light", light_id), {343.0f, kLightY, 227.0f},
-             {343.0f, kLightY, 332.0f}, {213.0f, kLightY, 332.0f}, {213.0f, kLightY, 227.0f});
+  if (area_light) {
+    // The page gives the light's emission, not its reflectance; we give it the white paint's.
+    const std::uint32_t light_id = addMaterial(scene, "light", white, emission);
+    // Wound so that the emitting side faces down, into the box.
+    appendQuad(addMesh(scene, "light", light_id), {343.0f, kLightY, 227.0f},
+               {343.0f, kLightY, 332.0f}, {213.0f, kLightY, 332.0f}, {213.0f, kLightY, 227.0f});
+  } else {
+    // A Lambertian emitter of radiance L and area A has the intensity L·A·cos θ (W/sr) seen from
+    // afar: a spot of intensity L·A on its axis with a cos¹ fall-off over the whole lower
+    // hemisphere sends the same power, π·L·A, the same way. The ceiling quad goes with the
+    // emission: the ceiling is white where it was.
+    SpotLight spot;
+    spot.position = kSpotPosition;
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.intensity = emission * kLightArea;
+    spot.cone_angle_deg = 90.0f;
+    spot.falloff_exponent = 1.0f;
+    scene.spot_lights.push_back(spot);
+  }
 
   static const glm::vec3 kShortBlock[5][4] = {{{130.0f, 165.0f, 65.0f},
                                                {82.0f, 165.0f, 225.0f},
@@ -123,7 +202,9 @@ Scene makeCornellBox(const ParameterValues& parameters) {
                                               {265.0f, 330.0f, 296.0f},
                                               {423.0f, 330.0f, 247.0f},
                                               {423.0f, 0.0f, 247.0f}}};
-  if (parameters.boolean("blocks")) {
+  if (parameters.text("spheres") != "none") {
+    addSpheres(scene, parameters);
+  } else if (parameters.boolean("blocks")) {
     addBlock(addMesh(scene, "short_block", white_id), kShortBlock);
     addBlock(addMesh(scene, "tall_block", white_id), kTallBlock);
   }

@@ -4,6 +4,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace gib::scene {
 
@@ -14,23 +15,31 @@ void appendQuad(Mesh& mesh, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) 
   mesh.triangles.push_back({base, base + 2, base + 3});
 }
 
-void appendSphere(Mesh& mesh, glm::vec3 centre, float radius, int rings, int segments,
-                  bool inward) {
+void appendSphere(Mesh& mesh, glm::vec3 centre, float radius, int rings, int segments, bool inward,
+                  SphereShading shading) {
+  const bool smooth = shading == SphereShading::kSmooth;
+  if (smooth ? mesh.normals.size() != mesh.positions.size() : !mesh.normals.empty())
+    throw std::logic_error("appendSphere: the mesh's vertex normals would not match its vertices");
   const auto base = static_cast<std::uint32_t>(mesh.positions.size());
   const float pi = glm::pi<float>();
+  // Each vertex from its unit direction: the position on the sphere and, when smooth, the exact
+  // normal there (the same direction, turned inwards with the triangles).
+  auto addVertex = [&](glm::vec3 direction) {
+    mesh.positions.push_back(centre + radius * direction);
+    if (smooth) mesh.normals.push_back(inward ? -direction : direction);
+  };
   // Vertex 0 is the north pole, then (rings − 1) rings of `segments` vertices, then the south pole.
-  mesh.positions.push_back(centre + glm::vec3(0, radius, 0));
+  addVertex(glm::vec3(0, 1, 0));
   for (int r = 1; r < rings; ++r) {
     float theta = pi * float(r) / float(rings);
     for (int s = 0; s < segments; ++s) {
       float phi = 2.0f * pi * float(s) / float(segments);
-      mesh.positions.push_back(centre + radius * glm::vec3(std::sin(theta) * std::cos(phi),
-                                                           std::cos(theta),
-                                                           -std::sin(theta) * std::sin(phi)));
+      addVertex(glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                          -std::sin(theta) * std::sin(phi)));
     }
   }
   const auto south = static_cast<std::uint32_t>(mesh.positions.size());
-  mesh.positions.push_back(centre - glm::vec3(0, radius, 0));
+  addVertex(glm::vec3(0, -1, 0));
 
   auto ring = [&](int r, int s) {
     return base + 1 + std::uint32_t((r - 1) * segments + (s % segments));

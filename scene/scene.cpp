@@ -15,7 +15,16 @@ bool isIdealSpecular(MaterialType type) {
     case MaterialType::kLambert:
     case MaterialType::kPhong:
       return false;
+    case MaterialType::kMirror:
+    case MaterialType::kGlass:
+      return true;
   }
+  return false;
+}
+
+bool Scene::hasIdealSpecular() const {
+  for (const Mesh& mesh : meshes)
+    if (!mesh.triangles.empty() && isIdealSpecular(materials.at(mesh.material).type)) return true;
   return false;
 }
 
@@ -57,6 +66,24 @@ void validateMaterial(const Material& m) {
   validateRgb(m.emission, where + " emission");
   require(std::isfinite(m.exponent) && m.exponent >= 0,
           fmt::format("{} exponent must be finite and >= 0, got {}", where, m.exponent));
+  if (m.type == MaterialType::kMirror && !m.perfect_mirror) {
+    for (int c = 0; c < 3; ++c) {
+      require(std::isfinite(m.conductor_n[c]) && m.conductor_n[c] > 0,
+              fmt::format("{} n must be finite and > 0 in every channel, got {} in channel {}; "
+                          "give the metal's refractive index (e.g. gold's, 0.18 at 650 nm)",
+                          where, m.conductor_n[c], c));
+      require(std::isfinite(m.conductor_k[c]) && m.conductor_k[c] >= 0,
+              fmt::format("{} k (the extinction coefficient kappa) must be finite and >= 0 in "
+                          "every channel, got {} in channel {}",
+                          where, m.conductor_k[c], c));
+    }
+  }
+  if (m.type == MaterialType::kGlass) {
+    require(std::isfinite(m.ior) && m.ior >= kMinGlassIor && m.ior <= kMaxGlassIor,
+            fmt::format("{} ior must be in [{}, {}] (air to germanium), got {}; glass is about 1.5",
+                        where, kMinGlassIor, kMaxGlassIor, m.ior));
+    validateRgb(m.absorption, where + " absorption");
+  }
   // Reflecting more than arrives would make the path tracer diverge; every loader must stop it.
   for (int c = 0; c < 3; ++c)
     require(m.diffuse[c] + m.specular[c] <= 1.0f + 1e-6f,
@@ -72,6 +99,13 @@ void validateMesh(const Scene& scene, const Mesh& mesh) {
                       mesh.material, scene.materials.size()));
   for (const glm::vec3& p : mesh.positions)
     require(isFinite(p), fmt::format("{} has a non-finite vertex position", where));
+  require(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size(),
+          fmt::format("{} has {} vertex normals for {} positions; give one normal per vertex or "
+                      "none (flat shading)",
+                      where, mesh.normals.size(), mesh.positions.size()));
+  for (const glm::vec3& n : mesh.normals)
+    require(isFinite(n) && std::abs(glm::length(n) - 1.0f) < 1e-3f,
+            fmt::format("{} has a vertex normal that is not a finite unit vector", where));
   for (const glm::uvec3& t : mesh.triangles)
     for (int k = 0; k < 3; ++k)
       require(t[k] < mesh.positions.size(),
@@ -138,6 +172,16 @@ std::string hashScene(const Scene& scene) {
     addVec(m.specular);
     h.addFloat(m.exponent);
     addVec(m.emission);
+    // Only the new material types hash their fields, so that Lambert and Phong materials (every
+    // scene before them) keep their hashes.
+    if (m.type == MaterialType::kMirror) {
+      h.addU64(m.perfect_mirror ? 1 : 0);
+      addVec(m.conductor_n);
+      addVec(m.conductor_k);
+    } else if (m.type == MaterialType::kGlass) {
+      h.addFloat(m.ior);
+      addVec(m.absorption);
+    }
   }
   h.addU64(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes) {
@@ -147,6 +191,11 @@ std::string hashScene(const Scene& scene) {
     h.addU64(mesh.triangles.size());
     for (const glm::uvec3& t : mesh.triangles)
       for (int k = 0; k < 3; ++k) h.addU64(t[k]);
+    // Shading normals likewise only when given (a tagged section: flat meshes hash as before).
+    if (!mesh.normals.empty()) {
+      h.addString("normals");
+      for (const glm::vec3& n : mesh.normals) addVec(n);
+    }
   }
   h.addU64(scene.spot_lights.size());
   for (const SpotLight& l : scene.spot_lights) {

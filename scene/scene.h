@@ -23,15 +23,30 @@ inline float luminance(const Rgb& c) {
   return float(kLuminanceRed) * c.r + float(kLuminanceGreen) * c.g + float(kLuminanceBlue) * c.b;
 }
 
-enum class MaterialType { kLambert, kPhong };
+enum class MaterialType { kLambert, kPhong, kMirror, kGlass };
 
 // Whether a material type reflects or refracts as a delta distribution (an ideal mirror, glass):
-// what the specular techniques need. Lambert and Phong are not.
+// what the specular techniques need, and what path classes call S. Lambert and Phong are not:
+// their light paths are D, glossy lobes included (docs/rendering.md, "Path classes").
 bool isIdealSpecular(MaterialType type);
+
+// The range of a glass's index of refraction scene files and builders accept: from air (1, the
+// surrounding medium, so the glass is invisible) to germanium (about 4, the densest optical
+// material in common use).
+inline constexpr float kMinGlassIor = 1.0f;
+inline constexpr float kMaxGlassIor = 4.0f;
 
 // Lambert: f = diffuse/π. Phong (normalised modified Phong):
 // f = diffuse/π + specular·(n+2)/(2π)·cosⁿα, α between the mirror direction of ωo and ωi.
 // Energy conservation requires diffuse + specular ≤ 1 per channel (checked by validateScene).
+// Mirror: an ideal specular conductor; it reflects the fraction F(θ) of eq. 1.5 (the exact
+// Fresnel function of the complex index n + iκ, per channel, scene/fresnel_shared.h) into the
+// mirror direction, or all of it when `perfect_mirror` (a test reflector, R = 1 at every angle).
+// Glass: a smooth dielectric of index `ior` inside a surrounding medium of index 1; it reflects
+// F(θ) (exact, unpolarised) and refracts the rest by Snell's law, with total internal reflection,
+// and attenuates light travelling inside it by exp(−absorption·distance) (Beer–Lambert, per
+// channel, per scene unit). A glass mesh must be closed, with its triangles facing outwards: the
+// front side is the outside.
 // A material with non-zero emission turns its triangles into one-sided Lambertian area lights that
 // emit `emission` (radiance) from their front side.
 struct Material {
@@ -41,15 +56,26 @@ struct Material {
   Rgb specular{0.0f};
   float exponent = 1.0f;  // Phong n ≥ 0
   Rgb emission{0.0f};
+  Rgb conductor_n{1.0f};  // mirror: real part n > 0 of the index of refraction
+  Rgb conductor_k{0.0f};  // mirror: extinction coefficient κ ≥ 0
+  bool perfect_mirror = false;
+  float ior = 1.5f;      // glass, in [kMinGlassIor, kMaxGlassIor]
+  Rgb absorption{0.0f};  // glass: Beer–Lambert coefficient inside, per scene unit
 
   bool isEmissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
 };
 
 // An indexed triangle mesh. The front side of a triangle (a, b, c) is the side its normal
-// (b − a) × (c − a) points to; only emission is one-sided, reflection is two-sided.
+// (b − a) × (c − a) points to; only emission is one-sided, reflection is two-sided (glass has an
+// inside: the back side).
+// `normals`, when given, are unit shading normals per vertex (one per position, pointing to the
+// front side's hemisphere), interpolated across each triangle to shade a smooth surface out of
+// flat triangles; without them the surface is shaded flat. Rays always leave from the geometric
+// surface (docs/rendering.md, "Shading normals").
 struct Mesh {
   std::string name;
   std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
   std::vector<glm::uvec3> triangles;
   std::uint32_t material = 0;  // index into Scene::materials
 };
@@ -116,6 +142,8 @@ struct Scene {
 
   std::size_t triangleCount() const;
   bool hasEmissiveTriangles() const;
+  // Whether any mesh with triangles is a mirror or glass (isIdealSpecular).
+  bool hasIdealSpecular() const;
 };
 
 // Throws gib::InputError naming the first problem (bad index, NaN, negative reflectance, energy

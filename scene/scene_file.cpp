@@ -2,17 +2,15 @@
 
 #include "common/input_error.h"
 #include "common/join.h"
-#include "common/toml_reader.h"
+#include "scene/obj_mesh.h"
+#include "scene/scene_file_materials.h"
+#include "scene/scene_file_reader.h"
 
 #include <fmt/format.h>
-#include <tiny_obj_loader.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -28,44 +26,7 @@ constexpr int kMaxImageSide = 32768;  // beyond any display or render target we 
 
 using ErrorReporter = TomlErrorReporter;
 
-bool isFinite(const glm::vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-// The shared reader (common/toml_reader.h) plus the vectors and colours of scene files.
-class TableReader : public TomlTableReader {
- public:
-  using TomlTableReader::TomlTableReader;
-
-  glm::vec3 vec3(const toml::node& node, std::string_view key) const {
-    const toml::array* array = node.as_array();
-    glm::vec3 v(NAN);
-    if (array && array->size() == 3) {
-      for (int i = 0; i < 3; ++i)
-        v[i] = static_cast<float>(tomlNumber(*array->get(static_cast<std::size_t>(i))));
-    }
-    if (!isFinite(v))
-      errors().fail(node, fmt::format("{} must be an array of 3 numbers", path(key)),
-                    "write it as [x, y, z] with finite values");
-    return v;
-  }
-
-  // An RGB quantity: reflectance, radiance, intensity or irradiance, never negative.
-  Rgb rgb(const toml::node& node, std::string_view key) const {
-    const glm::vec3 v = vec3(node, key);
-    if (v.r < 0 || v.g < 0 || v.b < 0)
-      errors().fail(
-          node, fmt::format("{} must not be negative, got [{}, {}, {}]", path(key), v.r, v.g, v.b),
-          "use values >= 0");
-    return v;
-  }
-
-  template <typename Read, typename T>
-  T optional(std::string_view key, Read read, T fallback) const {
-    const toml::node* node = find(key);
-    return node ? (this->*read)(*node, key) : fallback;
-  }
-};
+using TableReader = SceneTableReader;
 
 const toml::table& requireTable(const ErrorReporter& errors, const toml::node& node,
                                 const std::string& name, std::string_view fix) {
@@ -112,140 +73,6 @@ int readImageSide(const TableReader& t, std::string_view key, int fallback) {
   return node ? static_cast<int>(t.integer(*node, key, 1, kMaxImageSide, "512")) : fallback;
 }
 
-// Reads [materials.*] in the order of the file; `indices` maps names to Scene::materials indices.
-std::vector<Material> readMaterials(const TableReader& root,
-                                    std::map<std::string, std::uint32_t>& indices) {
-  std::vector<std::pair<const toml::key*, const toml::node*>> entries;
-  if (const toml::node* node = root.find("materials")) {
-    const toml::table& table = requireTable(root.errors(), *node, "materials",
-                                            "write each material as a [materials.<name>] table");
-    entries = entriesInFileOrder(table);
-  }
-
-  std::vector<Material> materials;
-  for (const auto& [key, node] : entries) {
-    const std::string name = "materials." + std::string(key->str());
-    const std::string header = "[" + name + "]";
-    const toml::table& table =
-        requireTable(root.errors(), *node, name, "write it as a [materials.<name>] table");
-    Material m;
-    m.name = std::string(key->str());
-    const toml::node* type = table.get("type");
-    const std::string type_name = type && type->is_string() ? type->as_string()->get() : "";
-    if (!type)
-      root.errors().fail(table, fmt::format("missing key '{}.type'", name),
-                         fmt::format("add type = \"lambert\" or type = \"phong\" to {}", header));
-    if (type_name != "lambert" && type_name != "phong")
-      root.errors().fail(*type, fmt::format("{}.type must be \"lambert\" or \"phong\"", name),
-                         "write type = \"lambert\" or type = \"phong\"");
-    const bool phong = type_name == "phong";
-    std::vector<std::string> allowed = {"type", "diffuse", "emission"};
-    if (phong) allowed.insert(allowed.end(), {"specular", "exponent"});
-    const TableReader t(root.errors(), table, name, header + " (type \"" + type_name + "\")",
-                        allowed);
-
-    m.type = phong ? MaterialType::kPhong : MaterialType::kLambert;
-    const toml::node& diffuse = t.require("diffuse", "[r, g, b]");
-    m.diffuse = t.rgb(diffuse, "diffuse");
-    m.emission = t.optional("emission", &TableReader::rgb, Rgb(0.0f));
-    const toml::node* energy_at = &diffuse;
-    if (phong) {
-      energy_at = &t.require("specular", "[r, g, b]");
-      m.specular = t.rgb(*energy_at, "specular");
-      const toml::node& exponent = t.require("exponent", "50.0");
-      m.exponent = static_cast<float>(t.number(exponent, "exponent"));
-      if (m.exponent < 0)
-        t.errors().fail(exponent, fmt::format("{}.exponent must be >= 0, got {}", name, m.exponent),
-                        "use a Phong exponent >= 0");
-    }
-    // A material that reflects more than it receives makes the path tracer diverge.
-    for (int c = 0; c < 3; ++c) {
-      if (m.diffuse[c] + m.specular[c] > 1.0f)
-        t.errors().fail(*energy_at,
-                        fmt::format("{} reflects more light than it receives: {} = {} > 1 in "
-                                    "channel {}",
-                                    name, phong ? "diffuse + specular" : "diffuse",
-                                    m.diffuse[c] + m.specular[c], c),
-                        phong ? "lower diffuse or specular" : "use a reflectance <= 1");
-    }
-    indices[m.name] = static_cast<std::uint32_t>(materials.size());
-    materials.push_back(std::move(m));
-  }
-  return materials;
-}
-
-// The text of the OBJ file at `path`; `where` is the `file` value, for errors.
-std::string readObjText(const TableReader& t, const toml::node& where, const fs::path& path) {
-  const std::string key = t.path("file");
-  const std::string fix = "check the path (a relative path starts at the scene file's folder)";
-  std::error_code ec;
-  if (!fs::exists(path, ec))
-    t.errors().fail(where, fmt::format("OBJ file '{}' ({}) does not exist", path.string(), key),
-                    fix);
-  if (!fs::is_regular_file(path, ec))
-    t.errors().fail(where, fmt::format("OBJ path '{}' ({}) is not a file", path.string(), key),
-                    fix);
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in.is_open()) text << in.rdbuf();
-  if (!in.is_open() || in.bad())
-    t.errors().fail(where, fmt::format("cannot read OBJ file '{}' ({})", path.string(), key),
-                    "check the file's permissions");
-  return text.str();
-}
-
-// Triangles of an OBJ file (positions only); `where` is the `file` value, for errors.
-Mesh loadObj(const TableReader& t, const toml::node& where, const fs::path& path) {
-  const std::string key = t.path("file");
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  // From a string with an empty material library: the OBJ's own materials are never read.
-  if (!reader.ParseFromString(readObjText(t, where, path), "", config))
-    t.errors().fail(where,
-                    fmt::format("OBJ file '{}' ({}) is malformed: {}", path.string(), key,
-                                oneLine(reader.Error())),
-                    "fix or re-export the OBJ file");
-
-  Mesh mesh;
-  const std::vector<tinyobj::real_t>& v = reader.GetAttrib().vertices;
-  for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
-    mesh.positions.emplace_back(v[i], v[i + 1], v[i + 2]);
-    if (!isFinite(mesh.positions.back()))
-      t.errors().fail(where,
-                      fmt::format("OBJ file '{}' ({}) has a non-finite position at vertex {}",
-                                  path.string(), key, mesh.positions.size()),
-                      "fix or re-export the OBJ file");
-  }
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    std::size_t first = 0;
-    for (unsigned int corners : shape.mesh.num_face_vertices) {
-      // Already triangles after triangulation; a fan keeps any other polygon whole.
-      for (unsigned int k = 1; k + 1 < corners; ++k) {
-        glm::uvec3 triangle;
-        for (int c = 0; c < 3; ++c) {
-          const std::size_t corner = first + (c == 0 ? 0 : k + static_cast<unsigned int>(c) - 1);
-          const int index = shape.mesh.indices[corner].vertex_index;
-          if (index < 0 || static_cast<std::size_t>(index) >= mesh.positions.size())
-            t.errors().fail(
-                where,
-                fmt::format("OBJ file '{}' ({}) refers to vertex {} but has {} vertices",
-                            path.string(), key, index + 1, mesh.positions.size()),
-                "fix or re-export the OBJ file");
-          triangle[c] = static_cast<unsigned int>(index);
-        }
-        mesh.triangles.push_back(triangle);
-      }
-      first += corners;
-    }
-  }
-  if (mesh.triangles.empty())
-    t.errors().fail(where, fmt::format("OBJ file '{}' ({}) has no triangles", path.string(), key),
-                    "give the OBJ file at least one face ('f' line) of 3 or more vertices");
-  return mesh;
-}
-
 Mesh readMesh(const TableReader& t, const fs::path& base_dir,
               const std::map<std::string, std::uint32_t>& materials) {
   const toml::node& file = t.require("file", "\"mesh.obj\"");
@@ -276,19 +103,17 @@ Mesh readMesh(const TableReader& t, const fs::path& base_dir,
                       "give a positive number or [x, y, z] of positive numbers; use flip_normals "
                       "to turn a mesh's front side around");
   }
-  bool flip = false;
-  if (const toml::node* node = t.find("flip_normals")) {
-    if (!node->is_boolean())
-      t.errors().fail(*node, fmt::format("{} must be true or false", t.path("flip_normals")),
-                      "write flip_normals = true or flip_normals = false");
-    flip = node->as_boolean()->get();
-  }
+  const bool flip = t.optional("flip_normals", &TableReader::boolean, false);
+  const bool smooth = t.optional("smooth", &TableReader::boolean, true);
 
   const fs::path path = (base_dir / fs::path(file_name)).lexically_normal();
-  Mesh mesh = loadObj(t, file, path);
+  Mesh mesh = loadObjMesh(t, file, path, smooth);
   mesh.name = file_name;
   mesh.material = found->second;
   for (glm::vec3& p : mesh.positions) p = p * scale + translate;
+  // Normals transform with the inverse transpose of the scale; they keep pointing to the front
+  // side, so they turn around with it.
+  for (glm::vec3& n : mesh.normals) n = glm::normalize(n / scale) * (flip ? -1.0f : 1.0f);
   if (flip)
     for (glm::uvec3& triangle : mesh.triangles) std::swap(triangle.y, triangle.z);
   return mesh;
@@ -366,13 +191,13 @@ Scene loadSceneFile(const std::filesystem::path& toml_path) {
   }
 
   std::map<std::string, std::uint32_t> material_indices;
-  scene.materials = readMaterials(root, material_indices);
+  scene.materials = readSceneFileMaterials(root, material_indices);
   const fs::path base_dir = fs::absolute(toml_path).parent_path();
   const std::vector<const toml::table*> meshes = tomlTableArray(root, "meshes");
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const TableReader t(errors, *meshes[i], fmt::format("meshes[{}]", i),
                         fmt::format("[[meshes]] entry {}", i + 1),
-                        {"file", "material", "translate", "scale", "flip_normals"});
+                        {"file", "material", "translate", "scale", "flip_normals", "smooth"});
     scene.meshes.push_back(readMesh(t, base_dir, material_indices));
   }
   const std::vector<const toml::table*> lights = tomlTableArray(root, "lights");

@@ -31,12 +31,25 @@
 //   diffuse = [0.78, 0.78, 0.78]
 //   emission = [17.0, 12.0, 4.0]          # optional: radiance of a one-sided emitter
 //
+//   [materials.gold]
+//   type = "mirror"                       # an ideal specular conductor (scene.h)
+//   metal = "gold"                        # perfect | aluminium | silver | gold | copper
+//                                         # (scene/metals.h), or instead of metal:
+//   # n = [0.14, 0.43, 1.38]              # the index n + iκ per channel: n > 0
+//   # k = [3.70, 2.46, 1.91]              # κ >= 0 (both n and k, never with metal)
+//
+//   [materials.glass]
+//   type = "glass"                        # a smooth dielectric; its meshes closed, facing out
+//   ior = 1.5                             # optional, default 1.5, in [1, 4]
+//   absorption = [0.0, 0.0, 0.0]          # optional: Beer–Lambert coefficient per scene unit
+//
 //   [[meshes]]                            # any number of meshes
 //   file = "room.obj"                     # relative to the TOML file
 //   material = "white"                    # a name from [materials]
 //   translate = [0.0, 0.0, 0.0]           # optional, default 0
 //   scale = 1.0                           # optional, a number or [x, y, z], > 0; default 1
 //   flip_normals = false                  # optional: reverse the winding (the emitting side)
+//   smooth = true                         # optional: shade with the OBJ's vn normals, if any
 //
 //   [[lights]]                            # any number of spot and directional lights
 //   type = "spot"
@@ -54,9 +67,13 @@
 //   [sky]                                 # optional
 //   radiance = [0.1, 0.1, 0.1]            # optional, default black
 //
-// OBJ files: every face is triangulated; only vertex positions are read; the OBJ's own
+// OBJ files: every face is triangulated; vertex positions are read, and the normals of `vn` lines
+// when the faces give them (f v//vn, f v/vt/vn) and `smooth` is true: then every face corner needs
+// a normal and a position used with different normals becomes one vertex per normal (exact, not
+// averaged); without normals a mesh is shaded flat. Texture coordinates and the OBJ's own
 // materials (usemtl, mtllib) are ignored, since each [[meshes]] entry has exactly one material.
-// A mesh's vertices are scaled, then translated. Numbers may be integers or floats; NaN and
+// A mesh's vertices are scaled, then translated; its normals follow the scale (inverse transpose)
+// and turn with flip_normals. Numbers may be integers or floats; NaN and
 // infinities are rejected everywhere. Materials keep the order of the file.
 //
 // Strictness: a key that is not listed above (or not allowed for the material's or light's

@@ -1,12 +1,17 @@
 #include "scene/builtin_scenes.h"
 #include "common/input_error.h"
 #include "scene/camera.h"
+#include "scene/metals.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
+#include <cmath>
 #include <map>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace gib::scene {
 namespace {
@@ -42,6 +47,158 @@ TEST(CornellBox, BlocksCanBeLeftOutWithoutChangingTheDefaultScene) {
   EXPECT_THROW(loadScene("cornell", {"blocks=no"}), InputError);
 }
 
+// The hashes of the built-in scenes' defaults before mirrors and glass existed (computed with the
+// build of that time): stored references are keyed by them, so new parameters must keep them.
+constexpr const char* kCornellHash = "f35cc26e1cfcf433408ddbea59855255";
+constexpr const char* kEmptyCornellHash = "c7b34a69654d0d5901953bf772499e70";
+constexpr const char* kFurnaceHash = "2697d276bf8995647466d825b8bc59e5";
+
+TEST(CornellBox, DefaultsKeepTheHashesStoredReferencesHave) {
+  EXPECT_EQ(hashScene(loadScene("cornell")), kCornellHash);
+  EXPECT_EQ(hashScene(loadScene("cornell", {"blocks=false"})), kEmptyCornellHash);
+  EXPECT_EQ(hashScene(loadScene("cornell", {"spheres=none", "metal=silver", "ior=1.5",
+                                            "absorption=0,0,0", "light=area"})),
+            kCornellHash);
+  EXPECT_EQ(hashScene(loadScene("furnace")), kFurnaceHash);
+  EXPECT_EQ(hashScene(loadScene("furnace", {"object=none"})), kFurnaceHash);
+}
+
+const Mesh* findMesh(const Scene& scene, const std::string& name) {
+  for (const Mesh& mesh : scene.meshes)
+    if (mesh.name == name) return &mesh;
+  return nullptr;
+}
+
+// The sphere's centre and radius from its vertices' bounding box.
+std::pair<glm::vec3, float> sphereOf(const Mesh& mesh) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return {0.5f * (lo + hi), 0.5f * (hi.y - lo.y)};
+}
+
+TEST(CornellBox, SpheresReplaceTheBlocksWithSmoothMirrorAndGlass) {
+  const Scene s = loadScene("cornell", {"spheres=mirror_glass"});
+  EXPECT_EQ(findMesh(s, "short_block"), nullptr);
+  EXPECT_EQ(findMesh(s, "tall_block"), nullptr);
+  const Mesh* mirror = findMesh(s, "mirror_sphere");
+  const Mesh* glass = findMesh(s, "glass_sphere");
+  ASSERT_NE(mirror, nullptr);
+  ASSERT_NE(glass, nullptr);
+  EXPECT_TRUE(s.hasIdealSpecular());
+  // Silver by default, glass of index 1.5 without absorption.
+  const Material& m = s.materials.at(mirror->material);
+  EXPECT_EQ(m.type, MaterialType::kMirror);
+  EXPECT_FALSE(m.perfect_mirror);
+  EXPECT_EQ(m.conductor_n, findMetal("silver")->n);
+  EXPECT_EQ(m.conductor_k, findMetal("silver")->k);
+  const Material& g = s.materials.at(glass->material);
+  EXPECT_EQ(g.type, MaterialType::kGlass);
+  EXPECT_EQ(g.ior, 1.5f);
+  EXPECT_EQ(g.absorption, Rgb(0.0f));
+  int specular_meshes = 0;
+  for (const Mesh& mesh : s.meshes) {
+    const bool specular = isIdealSpecular(s.materials.at(mesh.material).type);
+    specular_meshes += specular;
+    EXPECT_EQ(mesh.normals.empty(), !specular) << mesh.name << ": only the spheres are smooth";
+  }
+  EXPECT_EQ(specular_meshes, 2);
+  // 64 rings × 128 segments: two poles and 63 rings of vertices.
+  EXPECT_EQ(mirror->positions.size(), 2u + 63u * 128u);
+  EXPECT_EQ(mirror->normals.size(), mirror->positions.size());
+  // Blocks or not, the spheres take their place: the same scene.
+  EXPECT_EQ(hashScene(s),
+            hashScene(loadScene("cornell", {"spheres=mirror_glass", "blocks=false"})));
+}
+
+TEST(CornellBox, SpheresStandOnTheFloorInViewAndClearOfTheWalls) {
+  const Scene s = loadScene("cornell", {"spheres=mirror_glass"});
+  const CameraFrame frame = makeCameraFrame(s.camera, 512, 512);
+  for (const char* name : {"mirror_sphere", "glass_sphere"}) {
+    const Mesh& mesh = *findMesh(s, name);
+    const auto [centre, radius] = sphereOf(mesh);
+    EXPECT_NEAR(radius, 100.0f, 1e-3f) << name;
+    EXPECT_NEAR(centre.y - radius, 0.0f, 1e-3f) << name << " stands on the floor";
+    // The walls lean by at most 3.2 mm over the box's depth; 50 mm clear of the planes x = 0,
+    // x = 552.8 − 3.2, z = 0 (the opening) and z = 559.2 is clear of every wall.
+    EXPECT_GT(centre.x - radius, 50.0f) << name;
+    EXPECT_LT(centre.x + radius, 549.6f - 50.0f) << name;
+    EXPECT_GT(centre.z - radius, 50.0f) << name;
+    EXPECT_LT(centre.z + radius, 559.2f - 50.0f) << name;
+    // Every vertex projects inside the image.
+    for (const glm::vec3& p : mesh.positions) {
+      const glm::vec3 d = p - frame.origin;
+      const float depth = glm::dot(d, frame.forward);
+      ASSERT_GT(depth, 0.0f);
+      EXPECT_LT(std::abs(glm::dot(d, frame.right)) / depth, frame.tan_half_fov_y * frame.aspect);
+      EXPECT_LT(std::abs(glm::dot(d, frame.up)) / depth, frame.tan_half_fov_y);
+    }
+  }
+  const float apart = glm::length(sphereOf(*findMesh(s, "mirror_sphere")).first -
+                                  sphereOf(*findMesh(s, "glass_sphere")).first);
+  EXPECT_GT(apart, 200.0f) << "the spheres do not touch";
+}
+
+TEST(CornellBox, SphereParametersReachTheMaterials) {
+  const Scene gold = loadScene("cornell", {"spheres=mirror", "metal=gold"});
+  EXPECT_EQ(findMesh(gold, "glass_sphere"), nullptr);
+  const Material& m = gold.materials.at(findMesh(gold, "mirror_sphere")->material);
+  EXPECT_EQ(m.conductor_n, findMetal("gold")->n);
+  const Scene perfect = loadScene("cornell", {"spheres=mirror", "metal=perfect"});
+  EXPECT_TRUE(perfect.materials.at(findMesh(perfect, "mirror_sphere")->material).perfect_mirror);
+  EXPECT_NE(hashScene(gold), hashScene(perfect));
+
+  const Scene glass =
+      loadScene("cornell", {"spheres=glass", "ior=1.33", "absorption=0.01,0,0.002"});
+  EXPECT_EQ(findMesh(glass, "mirror_sphere"), nullptr);
+  const Material& g = glass.materials.at(findMesh(glass, "glass_sphere")->material);
+  EXPECT_FLOAT_EQ(g.ior, 1.33f);
+  EXPECT_EQ(g.absorption, Rgb(0.01f, 0.0f, 0.002f));
+  EXPECT_NE(hashScene(glass), hashScene(loadScene("cornell", {"spheres=glass"})));
+}
+
+TEST(CornellBox, BadSphereParametersAreInputErrors) {
+  for (const std::vector<std::string>& bad :
+       std::vector<std::vector<std::string>>{{"ior=0"},
+                                             {"ior=0.9"},
+                                             {"ior=4.5"},
+                                             {"ior=nan"},
+                                             {"absorption=-1,0,0"},
+                                             {"metal=tin"},
+                                             {"spheres=three"},
+                                             {"light=point"}})
+    EXPECT_THROW(loadScene("cornell", bad), InputError) << bad[0];
+}
+
+TEST(CornellBox, SpotLightReplacesTheAreaLightWithTheSamePower) {
+  const Scene area = loadScene("cornell");
+  const Scene spot = loadScene("cornell", {"light=spot"});
+  EXPECT_FALSE(spot.hasEmissiveTriangles());
+  EXPECT_EQ(findMesh(spot, "light"), nullptr);
+  ASSERT_EQ(spot.spot_lights.size(), 1u);
+  const SpotLight& l = spot.spot_lights[0];
+  EXPECT_EQ(l.direction, glm::vec3(0, -1, 0));
+  EXPECT_NEAR(l.position.x, 278.0f, 1e-3f);
+  EXPECT_NEAR(l.position.z, 279.5f, 1e-3f);
+  EXPECT_LT(l.position.y, 548.8f);
+  EXPECT_GT(l.position.y, 540.0f);
+  // A Lambertian light of radiance L and area A emits π·L·A; the spot, I0·cos θ over the lower
+  // hemisphere, 2π·I0/(n + 1) = π·I0 with n = 1.
+  const Rgb radiance = area.materials.at(findMesh(area, "light")->material).emission;
+  EXPECT_EQ(l.cone_angle_deg, 90.0f);
+  EXPECT_EQ(l.falloff_exponent, 1.0f);
+  const float pi = glm::pi<float>();
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(2.0f * pi * l.intensity[c] / (l.falloff_exponent + 1.0f),
+                pi * radiance[c] * 130.0f * 105.0f, 1e-3f * pi * radiance[c] * 130.0f * 105.0f);
+  // The rest of the box is unchanged, and spheres combine with it.
+  const Scene both = loadScene("cornell", {"light=spot", "spheres=glass"});
+  EXPECT_EQ(both.spot_lights.size(), 1u);
+  EXPECT_NE(findMesh(both, "glass_sphere"), nullptr);
+}
+
 TEST(CornellBox, RedWallIsOnTheLeftOfTheImage) {
   // Right-handed world, camera looking +z: +x is image left, where the published red wall is.
   const Scene s = loadScene("cornell");
@@ -74,6 +231,35 @@ TEST(Furnace, SphereIsClosed) {
   for (auto& [edge, count] : directed) {
     EXPECT_EQ(count, 1);
     EXPECT_EQ(directed.count({edge.second, edge.first}), 1u);
+  }
+}
+
+TEST(Furnace, ObjectsAreALosslessSmoothSphereInView) {
+  const Scene none = loadScene("furnace");
+  EXPECT_EQ(none.meshes.size(), 1u);
+  EXPECT_TRUE(none.meshes[0].normals.empty()) << "the walls stay flat";
+  for (const char* object : {"mirror", "glass"}) {
+    const Scene s = loadScene("furnace", {std::string("object=") + object});
+    ASSERT_EQ(s.meshes.size(), 2u) << object;
+    const Mesh& sphere = s.meshes[1];
+    const Material& m = s.materials.at(sphere.material);
+    if (std::string(object) == "mirror") {
+      EXPECT_EQ(m.type, MaterialType::kMirror);
+      EXPECT_TRUE(m.perfect_mirror) << "a perfect mirror keeps every pixel at 1";
+    } else {
+      EXPECT_EQ(m.type, MaterialType::kGlass);
+      EXPECT_EQ(m.ior, 1.5f);
+      EXPECT_EQ(m.absorption, Rgb(0.0f)) << "lossless glass keeps every pixel at 1";
+    }
+    EXPECT_EQ(m.emission, Rgb(0.0f));
+    ASSERT_EQ(sphere.normals.size(), sphere.positions.size());
+    // Outward normals (the glass's front side is its outside), in front of the camera.
+    const auto [centre, radius] = sphereOf(sphere);
+    EXPECT_NEAR(radius, 0.25f, 1e-5f);
+    EXPECT_LT(centre.z + radius, 0.0f);
+    for (std::size_t i = 0; i < sphere.positions.size(); ++i)
+      EXPECT_GT(glm::dot(sphere.normals[i], sphere.positions[i] - centre), 0.0f);
+    EXPECT_EQ(s.meshes[0].positions, none.meshes[0].positions);
   }
 }
 
