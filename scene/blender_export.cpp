@@ -65,29 +65,61 @@ void checkSettings(const BlenderExportSettings& s) {
                                  kCyclesMaxSeed));
 }
 
+// A mirror is Cycles' Sharp Glossy BSDF, whose colour the builder computes per shading point from
+// the conductor's n and κ (scene/blender_scene.py, conductor_fresnel); a perfect mirror's is white.
+std::string mirrorEntry(const Material& m) {
+  if (m.type != MaterialType::kMirror) return "None";
+  if (m.perfect_mirror) return "\"perfect\"";
+  return fmt::format("{{\"n\": {}, \"k\": {}}}", vec(m.conductor_n), vec(m.conductor_k));
+}
+
+std::string glassEntry(const Material& m) {
+  if (m.type != MaterialType::kGlass) return "None";
+  std::string absorption = "None";
+  if (largest(m.absorption) > 0) {
+    const CyclesAbsorption a = cyclesAbsorption(m.absorption);
+    absorption = fmt::format("{{\"color\": {}, \"density\": {}}}", vec(a.color), number(a.density));
+  }
+  return fmt::format("{{\"ior\": {}, \"absorption\": {}}}", number(m.ior), absorption);
+}
+
 std::string materialEntry(const Material& m) {
+  // Mirrors and glass have no diffuse part.
+  const bool lambert = m.type == MaterialType::kLambert || m.type == MaterialType::kPhong;
+  const std::string diffuse = lambert ? vec(m.diffuse) : "None";
   std::string glossy = "None";
   if (m.type == MaterialType::kPhong && largest(m.specular) > 0)
     glossy = fmt::format("{{\"color\": {}, \"roughness\": {}}}", vec(m.specular),
                          number(float(phongToBeckmannRoughness(m.exponent))));
   const std::string emission = m.isEmissive() ? vec(m.emission) : "None";
   return fmt::format(
-      "        {{\"name\": {}, \"diffuse\": {}, \"glossy\": {}, \"emission\": {}}},\n",
-      text(m.name), vec(m.diffuse), glossy, emission);
+      "        {{\"name\": {}, \"diffuse\": {}, \"glossy\": {}, \"mirror\": {}, \"glass\": {}, "
+      "\"emission\": {}}},\n",
+      text(m.name), diffuse, glossy, mirrorEntry(m), glassEntry(m), emission);
+}
+
+// A list of triples (points, normals, triangles) written flat, as Blender's foreach_set takes them.
+template <typename T, typename Write>
+std::string flatList(const std::vector<T>& values, Write write) {
+  std::string out;
+  for (const T& v : values)
+    fmt::format_to(std::back_inserter(out), "{}{}", out.empty() ? "" : ", ", write(v));
+  return "[" + out + "]";
 }
 
 std::string meshEntry(const Mesh& mesh) {
-  std::string positions, triangles;
-  for (const glm::vec3& p : mesh.positions)
-    fmt::format_to(std::back_inserter(positions), "{}{}, {}, {}", positions.empty() ? "" : ", ",
-                   number(p.x), number(p.y), number(p.z));
-  for (const glm::uvec3& t : mesh.triangles)
-    fmt::format_to(std::back_inserter(triangles), "{}{}, {}, {}", triangles.empty() ? "" : ", ",
-                   t[0], t[1], t[2]);
+  const auto point = [](const glm::vec3& p) {
+    return fmt::format("{}, {}, {}", number(p.x), number(p.y), number(p.z));
+  };
+  const auto triangle = [](const glm::uvec3& t) {
+    return fmt::format("{}, {}, {}", t[0], t[1], t[2]);
+  };
   return fmt::format(
-      "        {{\"name\": {}, \"material\": {},\n         \"positions\": [{}],\n         "
-      "\"triangles\": [{}]}},\n",
-      text(mesh.name), mesh.material, positions, triangles);
+      "        {{\"name\": {}, \"material\": {},\n         \"positions\": {},\n         "
+      "\"normals\": {},\n         \"triangles\": {}}},\n",
+      text(mesh.name), mesh.material, flatList(mesh.positions, point),
+      mesh.normals.empty() ? "None" : flatList(mesh.normals, point),
+      flatList(mesh.triangles, triangle));
 }
 
 // Camera rays must reach the farthest vertex; the near plane is as close as Blender allows
@@ -162,6 +194,27 @@ std::vector<std::string> phongWarnings(const Scene& scene) {
       names.size() > 1 ? "s" : "", joinNames(names, ", "), names.size() > 1 ? "have" : "has")};
 }
 
+// A path tracer finds light only by hitting an emitter or by a shadow ray to it; from a spot or
+// sun lamp of zero size, light that a mirror or glass reflected or refracted onto a surface (a
+// caustic, L S+ D E) arrives by neither: Cycles cannot render it, GI Bench's light tracing can.
+std::vector<std::string> deltaCausticWarnings(const Scene& scene) {
+  const auto lit = [](const auto& lights, auto power) {
+    return std::any_of(lights.begin(), lights.end(),
+                       [&](const auto& l) { return largest(power(l)) > 0; });
+  };
+  const bool spot = lit(scene.spot_lights, [](const SpotLight& l) { return l.intensity; });
+  const bool sun =
+      lit(scene.directional_lights, [](const DirectionalLight& l) { return l.irradiance; });
+  if (!(spot || sun) || !scene.hasIdealSpecular()) return {};
+  return {fmt::format(
+      "the {} lamps' caustics (their light reflected or refracted by mirrors or glass onto other "
+      "surfaces, L S+ D E) are missing from the Cycles image: a path tracer cannot reach a lamp "
+      "of zero size through a specular bounce",
+      spot && sun ? "spot and sun"
+      : spot      ? "spot"
+                  : "sun")};
+}
+
 std::string header(const Scene& scene, const BlenderExportSettings& s,
                    const std::vector<std::string>& warnings) {
   std::vector<std::string> parameters;
@@ -186,6 +239,15 @@ double blenderLampWatts(double intensity_w_per_sr) {
   return 4 * std::numbers::pi * intensity_w_per_sr;
 }
 
+CyclesAbsorption cyclesAbsorption(const Rgb& absorption) {
+  CyclesAbsorption out;
+  out.density = largest(absorption);
+  if (!(out.density > 0))
+    throw std::logic_error("cyclesAbsorption needs an absorption with a positive channel");
+  for (int c = 0; c < 3; ++c) out.color[c] = float(1.0 - double(absorption[c]) / out.density);
+  return out;
+}
+
 double phongToBeckmannRoughness(double exponent) {
   return std::pow(2.0 / (exponent + 2.0), 0.25);
 }
@@ -195,6 +257,7 @@ BlenderExport exportBlenderScript(const Scene& scene, const BlenderExportSetting
   BlenderExport result;
   result.warnings = phongWarnings(scene);
   const std::string spots = spotEntries(scene, result.warnings);
+  for (std::string& warning : deltaCausticWarnings(scene)) result.warnings.push_back(warning);
   if (!scene.medium.empty())
     result.warnings.push_back(fmt::format(
         "the participating medium ({} particles) is left out; the Cycles image has surfaces and "

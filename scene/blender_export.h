@@ -22,8 +22,8 @@ struct BlenderExportSettings {
 
 struct BlenderExport {
   std::string script;  // run as `blender -b --factory-startup --python FILE -- OUT.exr`
-  // What Cycles cannot reproduce exactly (Phong lobes, spot fall-off other than cos θ, media),
-  // one line each.
+  // What Cycles cannot reproduce exactly (Phong lobes, spot fall-off other than cos θ, media,
+  // caustics of point and directional lamps), one line each.
   std::vector<std::string> warnings;
 };
 
@@ -41,5 +41,18 @@ double blenderLampWatts(double intensity_w_per_sr);
 // matches a Phong exponent n (Walter et al. 2007, "Microfacet models for refraction through
 // rough surfaces", eq. 34: α = √(2 / (n + 2))).
 double phongToBeckmannRoughness(double exponent);
+
+// Cycles' Volume Absorption node of colour C and density ρ absorbs with the coefficient
+// σ = ρ·(1 − C) per channel and per world unit (intern/cycles/kernel/svm/closure.h,
+// svm_node_closure_volume: the weight of an absorption closure is (1 − C)·ρ), so light crossing a
+// distance d keeps exp(−ρ(1 − C)·d). The exported meshes are placed without scaling (a scene unit
+// is a world unit), so GI Bench's exp(−a·d) is matched by ρ = max(a) and C = 1 − a/ρ: then
+// ρ(1 − C) = a, exact up to the rounding of C to a float (an error below 2⁻²⁴·ρ in σ; none in the
+// largest channel, whose C is 0). `absorption` must have a positive channel.
+struct CyclesAbsorption {
+  Rgb color{0.0f};
+  float density = 0.0f;
+};
+CyclesAbsorption cyclesAbsorption(const Rgb& absorption);
 
 }  // namespace gib::scene

@@ -66,13 +66,96 @@ def rgba(rgb):
     return (rgb[0], rgb[1], rgb[2], 1.0)
 
 
-def make_material(spec, light_sampling):
-    material = bpy.data.materials.new(spec["name"])
-    material.cycles.sample_as_light = light_sampling
-    material.use_nodes = True
-    nodes, links = material.node_tree.nodes, material.node_tree.links
-    nodes.clear()
-    output = nodes.new("ShaderNodeOutputMaterial")
+class Value:
+    """A float of a material's node graph: a constant, or a socket that math nodes compute. The
+    arithmetic operators add Math nodes (constants are folded in Python), so a formula reads as
+    the C++ it copies."""
+
+    def __init__(self, tree, value):
+        self.tree, self.value = tree, value
+
+    def apply(self, operation, *operands):
+        values = [o.value if isinstance(o, Value) else float(o) for o in (self,) + operands]
+        if all(isinstance(v, float) for v in values):
+            return Value(self.tree, CONSTANT_FOLDS[operation](*values))
+        node = self.tree.nodes.new("ShaderNodeMath")
+        node.operation = operation
+        for socket, v in zip(node.inputs, values):
+            if isinstance(v, float):
+                socket.default_value = v
+            else:
+                self.tree.links.new(v, socket)
+        return Value(self.tree, node.outputs["Value"])
+
+    def constant(self, value):
+        return Value(self.tree, float(value))
+
+    def __add__(self, other): return self.apply("ADD", other)
+    def __radd__(self, other): return self.constant(other).apply("ADD", self)
+    def __sub__(self, other): return self.apply("SUBTRACT", other)
+    def __rsub__(self, other): return self.constant(other).apply("SUBTRACT", self)
+    def __mul__(self, other): return self.apply("MULTIPLY", other)
+    def __rmul__(self, other): return self.constant(other).apply("MULTIPLY", self)
+    def __truediv__(self, other): return self.apply("DIVIDE", other)
+    def sqrt(self): return self.apply("SQRT")
+    def maximum(self, other): return self.apply("MAXIMUM", other)
+
+
+CONSTANT_FOLDS = {"ADD": lambda a, b: a + b, "SUBTRACT": lambda a, b: a - b,
+                  "MULTIPLY": lambda a, b: a * b, "DIVIDE": lambda a, b: a / b,
+                  "SQRT": math.sqrt, "MAXIMUM": max, "ABSOLUTE": abs}
+
+
+def conductor_fresnel(tree, n, k):
+    """The colour of a mirror: the reflectance of eq. 1.5 for a conductor of complex index n + iκ
+    per channel, in the closed real form of fresnelConductor (scene/fresnel_shared.h), step for
+    step, at the angle between the incoming direction and the shading normal (the normal the
+    Sharp Glossy BSDF reflects about)."""
+    geometry = tree.nodes.new("ShaderNodeNewGeometry")
+    dot = tree.nodes.new("ShaderNodeVectorMath")
+    dot.operation = "DOT_PRODUCT"
+    tree.links.new(geometry.outputs["Normal"], dot.inputs[0])
+    tree.links.new(geometry.outputs["Incoming"], dot.inputs[1])
+    cos_i = Value(tree, dot.outputs["Value"]).apply("ABSOLUTE")
+    c2 = cos_i * cos_i
+    s2 = 1.0 - c2
+    combine = tree.nodes.new("ShaderNodeCombineRGB")
+    for channel, socket in enumerate(combine.inputs):
+        nc, kc = n[channel], k[channel]
+        t0 = (nc * nc - kc * kc) - s2
+        s = (t0 * t0 + 4.0 * nc * nc * kc * kc).sqrt()
+        a = (0.5 * (s + t0)).maximum(0.0).sqrt()
+        t1 = s + c2
+        t2 = 2.0 * cos_i * a
+        r_s = (t1 - t2) / (t1 + t2)
+        t3 = c2 * s + s2 * s2
+        t4 = t2 * s2
+        r_p = r_s * (t3 - t4) / (t3 + t4)
+        tree.links.new((0.5 * (r_s + r_p)).value, socket)
+    return combine.outputs["Image"]
+
+
+def make_surface(material, spec):
+    # The surface's BSDF: a mirror, glass, or Lambert with an optional glossy lobe (Phong).
+    tree = material.node_tree
+    nodes, links = tree.nodes, tree.links
+    if spec["mirror"] is not None:
+        mirror = nodes.new("ShaderNodeBsdfGlossy")
+        mirror.distribution = "SHARP"  # reflects all of its colour into the mirror direction
+        if spec["mirror"] == "perfect":
+            mirror.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+        else:
+            links.new(conductor_fresnel(tree, spec["mirror"]["n"], spec["mirror"]["k"]),
+                      mirror.inputs["Color"])
+        return mirror.outputs["BSDF"]
+    if spec["glass"] is not None:
+        # Cycles' Sharp Glass weighs reflection and refraction by the exact dielectric Fresnel
+        # with the index ior from the front face (the outside) and 1/ior from the back.
+        glass = nodes.new("ShaderNodeBsdfGlass")
+        glass.distribution = "SHARP"
+        glass.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+        glass.inputs["IOR"].default_value = spec["glass"]["ior"]
+        return glass.outputs["BSDF"]
     diffuse = nodes.new("ShaderNodeBsdfDiffuse")
     diffuse.inputs["Color"].default_value = rgba(spec["diffuse"])
     diffuse.inputs["Roughness"].default_value = 0.0  # Oren–Nayar with σ = 0 is Lambert
@@ -86,6 +169,28 @@ def make_material(spec, light_sampling):
         links.new(surface, both.inputs[0])
         links.new(glossy.outputs["BSDF"], both.inputs[1])
         surface = both.outputs["Shader"]
+    return surface
+
+
+def make_absorption(material, absorption):
+    # Beer–Lambert inside a glass: σ = density·(1 − colour) per channel (the exporter's mapping,
+    # cyclesAbsorption). A constant density is homogeneous, so Cycles attenuates by exp(−σd)
+    # along each segment in closed form instead of marching through it.
+    material.cycles.homogeneous_volume = True
+    volume = material.node_tree.nodes.new("ShaderNodeVolumeAbsorption")
+    volume.inputs["Color"].default_value = rgba(absorption["color"])
+    volume.inputs["Density"].default_value = absorption["density"]
+    return volume.outputs["Volume"]
+
+
+def make_material(spec, light_sampling):
+    material = bpy.data.materials.new(spec["name"])
+    material.cycles.sample_as_light = light_sampling
+    material.use_nodes = True
+    nodes, links = material.node_tree.nodes, material.node_tree.links
+    nodes.clear()
+    output = nodes.new("ShaderNodeOutputMaterial")
+    surface = make_surface(material, spec)
     if spec["emission"] is not None:
         # Cycles' mesh emitters shine from both sides; GI Bench's from the front face only, the
         # side (b − a) × (c − a) points to, which is also the side Cycles calls front. The back
@@ -103,13 +208,15 @@ def make_material(spec, light_sampling):
         links.new(surface, sides.inputs[2])  # Fac 1: the back face
         surface = sides.outputs["Shader"]
     links.new(surface, output.inputs["Surface"])
+    if spec["glass"] is not None and spec["glass"]["absorption"] is not None:
+        links.new(make_absorption(material, spec["glass"]["absorption"]), output.inputs["Volume"])
     return material
 
 
 def make_mesh(scene, spec, materials):
     # Exactly the exported triangles, in their winding (no validation, which could drop or
-    # reorder them), shaded flat.
-    positions, indices = spec["positions"], spec["triangles"]
+    # reorder them), shaded flat, or smooth with the exported normals.
+    positions, indices, normals = spec["positions"], spec["triangles"], spec["normals"]
     count = len(indices) // 3
     mesh = bpy.data.meshes.new(spec["name"])
     mesh.vertices.add(len(positions) // 3)
@@ -119,8 +226,16 @@ def make_mesh(scene, spec, materials):
     mesh.polygons.add(count)
     mesh.polygons.foreach_set("loop_start", list(range(0, 3 * count, 3)))
     mesh.polygons.foreach_set("loop_total", [3] * count)
-    mesh.polygons.foreach_set("use_smooth", [False] * count)
+    mesh.polygons.foreach_set("use_smooth", [normals is not None] * count)
     mesh.update(calc_edges=True)
+    if normals is not None:
+        # Custom split normals: Blender 3.4 keeps them only with auto smooth on, and an angle of
+        # 180° splits no edge, so every vertex has the one normal given. Blender stores them as
+        # 16-bit offsets from its own vertex normal (docs/cycles-cross-check.md gives the error).
+        mesh.use_auto_smooth = True
+        mesh.auto_smooth_angle = math.pi
+        mesh.normals_split_custom_set_from_vertices(
+            [normals[i:i + 3] for i in range(0, len(normals), 3)])
     mesh.materials.append(materials[spec["material"]])
     scene.collection.objects.link(bpy.data.objects.new(spec["name"], mesh))
 
@@ -269,4 +384,5 @@ def main():
         sys.exit(3)
 
 
-main()
+if __name__ == "__main__":  # not when a test loads the builder to call its parts
+    main()

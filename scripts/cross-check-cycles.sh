@@ -10,8 +10,9 @@
 #                                 [--cycles-no-light-sampling] [--own-truth]
 #
 # The truth is a Cycles render when the scene maps exactly onto Cycles; when it does not (the
-# exporter's warnings say what differs: Phong lobes, a spot fall-off, a medium), the two images
-# estimate different integrals, so each renderer's MSE is taken against a long render of its own.
+# exporter's warnings say what differs: Phong lobes, a spot fall-off, a medium, the caustics of a
+# spot or sun lamp, which Cycles cannot reach), the two images estimate different integrals, so
+# each renderer's MSE is taken against a long render of its own.
 # --own-truth measures each renderer against a long render of its own for an exact scene too:
 # its MSE is then its noise alone, without the small systematic difference between the renderers
 # (which the means and the worst block show). --replicas K is passed to `gibench render` (its

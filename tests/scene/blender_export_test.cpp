@@ -1,19 +1,26 @@
 // The Blender script of a scene: its data are the scene's own numbers in Blender's conventions,
-// the emitters' back faces emit nothing, and what Cycles cannot reproduce exactly is reported.
+// the emitters' back faces emit nothing, mirrors, glass and shading normals map onto Cycles'
+// sharp BSDFs, volume absorption and custom normals, and what Cycles cannot reproduce exactly is
+// reported. (tests/scripts/blender_builder_test.sh renders the builder's materials in Blender.)
 #include "scene/blender_export.h"
 
 #include "common/input_error.h"
 #include "scene/builtin_scenes.h"
+#include "scene/mesh_builder.h"
 
 #include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
+#include <cmath>
 #include <numbers>
+#include <random>
 
 namespace gib::scene {
 namespace {
 
+using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
 using ::testing::Not;
@@ -116,6 +123,146 @@ TEST(BlenderExport, SaysWhatCyclesCannotReproduce) {
   const BlenderExport cloud = exportBlenderScript(loadScene("cloud"), smallSettings());
   ASSERT_THAT(cloud.warnings, SizeIs(1));
   EXPECT_THAT(cloud.warnings[0], HasSubstr("medium"));
+}
+
+// The empty Cornell box with a quad of material `m` on the floor, shaded smooth when `normals`.
+Scene boxWithQuad(const Material& m, bool normals) {
+  Scene scene = loadScene("cornell", {"blocks=false"});
+  scene.materials.push_back(m);
+  Mesh quad;
+  quad.name = m.name + "_quad";
+  quad.material = std::uint32_t(scene.materials.size() - 1);
+  appendQuad(quad, {200, 1, 200}, {200, 1, 300}, {300, 1, 300}, {300, 1, 200});
+  if (normals)
+    quad.normals = {glm::normalize(glm::vec3(0.5f, 1, 0)), {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+  scene.meshes.push_back(quad);
+  return scene;
+}
+
+TEST(BlenderExport, MirrorsAreSharpGlossyWithTheConductorsFresnel) {
+  Material gold;
+  gold.name = "gold";
+  gold.type = MaterialType::kMirror;
+  gold.diffuse = Rgb(0.5f);  // ignored: a mirror has no diffuse part
+  gold.conductor_n = {0.18f, 0.42f, 1.37f};
+  gold.conductor_k = {3.42f, 2.35f, 1.77f};
+  const BlenderExport conductor = exportBlenderScript(boxWithQuad(gold, false), smallSettings());
+  EXPECT_THAT(conductor.warnings, IsEmpty());
+  EXPECT_THAT(conductor.script,
+              HasSubstr("{\"name\": \"gold\", \"diffuse\": None, \"glossy\": None, \"mirror\": "
+                        "{\"n\": " +
+                        vec(0.18f, 0.42f, 1.37f) + ", \"k\": " + vec(3.42f, 2.35f, 1.77f) +
+                        "}, \"glass\": None, \"emission\": None}"));
+  // The builder: a Sharp Glossy BSDF coloured by the Fresnel graph, with the shading normal's
+  // cosine; and the Cornell box's own materials stay Lambertian.
+  for (const char* builder :
+       {"mirror.distribution = \"SHARP\"", "def conductor_fresnel(tree, n, k):",
+        "links.new(geometry.outputs[\"Normal\"], dot.inputs[0])",
+        "tree.links.new(geometry.outputs[\"Incoming\"], dot.inputs[1])",
+        "caustics_reflective = True"})
+    EXPECT_THAT(conductor.script, HasSubstr(builder));
+  EXPECT_THAT(conductor.script, HasSubstr("\"name\": \"white\", \"diffuse\": ("));
+
+  Material perfect = gold;
+  perfect.name = "perfect";
+  perfect.perfect_mirror = true;
+  const BlenderExport ideal = exportBlenderScript(boxWithQuad(perfect, false), smallSettings());
+  EXPECT_THAT(ideal.warnings, IsEmpty());
+  EXPECT_THAT(ideal.script, HasSubstr("\"mirror\": \"perfect\", \"glass\": None"));
+}
+
+TEST(BlenderExport, GlassIsSharpGlassWithBeerLambertAbsorptionInside) {
+  Material glass;
+  glass.name = "glass";
+  glass.type = MaterialType::kGlass;
+  glass.ior = 1.5f;
+  const BlenderExport clear = exportBlenderScript(boxWithQuad(glass, false), smallSettings());
+  EXPECT_THAT(clear.warnings, IsEmpty());
+  EXPECT_THAT(clear.script, HasSubstr("\"diffuse\": None, \"glossy\": None, \"mirror\": None, "
+                                      "\"glass\": {\"ior\": 1.5, \"absorption\": None}"));
+  glass.absorption = {0.004f, 0.001f, 0.0f};
+  glass.ior = 1.33f;
+  const BlenderExport tinted = exportBlenderScript(boxWithQuad(glass, false), smallSettings());
+  EXPECT_THAT(tinted.warnings, IsEmpty());
+  // density 0.004, colour 1 − a/0.004.
+  EXPECT_THAT(tinted.script, HasSubstr("\"glass\": {\"ior\": 1.33, \"absorption\": {\"color\": " +
+                                       vec(0, 0.75f, 1) + ", \"density\": 0.004}}"));
+  for (const char* builder :
+       {"glass = nodes.new(\"ShaderNodeBsdfGlass\")", "glass.distribution = \"SHARP\"",
+        "nodes.new(\"ShaderNodeVolumeAbsorption\")", "homogeneous_volume = True",
+        "output.inputs[\"Volume\"]", "caustics_refractive = True",
+        "cycles.transmission_bounces = bounces", "cycles.transparent_max_bounces = bounces"})
+    EXPECT_THAT(tinted.script, HasSubstr(builder));
+}
+
+TEST(BlenderExport, AbsorptionBecomesDensityTimesOneMinusColour) {
+  const CyclesAbsorption a = cyclesAbsorption({0.02f, 0.005f, 0.0f});
+  EXPECT_EQ(a.density, 0.02f);
+  EXPECT_EQ(a.color, Rgb(0.0f, 0.75f, 1.0f));
+  // Cycles' σ = ρ·(1 − C), computed in float as Cycles does, is the absorption up to C's rounding
+  // to a float (below 2⁻²⁴·ρ, blender_export.h) and the rounding of Cycles' own float product
+  // (half an ulp of σ ≤ ρ, at most 2⁻²⁴·ρ): 2⁻²³·ρ in all.
+  std::mt19937 random(43);
+  std::uniform_real_distribution<float> coefficient(0.0f, 1.0f);
+  std::uniform_int_distribution<int> scale(-6, 2);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const float unit = std::ldexp(1.0f, scale(random));
+    const Rgb absorption(coefficient(random) * unit, coefficient(random) * unit,
+                         coefficient(random) * unit);
+    if (std::max({absorption.r, absorption.g, absorption.b}) <= 0) continue;
+    const CyclesAbsorption c = cyclesAbsorption(absorption);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GE(c.color[k], 0.0f);
+      EXPECT_LE(c.color[k], 1.0f);
+      EXPECT_NEAR(c.density * (1.0f - c.color[k]), absorption[k], std::ldexp(c.density, -23))
+          << "trial " << trial << ", channel " << k;
+    }
+  }
+  EXPECT_THROW(cyclesAbsorption(Rgb(0.0f)), std::logic_error);
+}
+
+TEST(BlenderExport, ShadingNormalsBecomeCustomSplitNormals) {
+  Material white;
+  white.name = "matte";
+  white.diffuse = Rgb(0.5f);
+  const BlenderExport smooth = exportBlenderScript(boxWithQuad(white, true), smallSettings());
+  EXPECT_THAT(smooth.warnings, IsEmpty());
+  const glm::vec3 tilted = glm::normalize(glm::vec3(0.5f, 1, 0));
+  EXPECT_THAT(smooth.script,
+              HasSubstr(fmt::format("\"normals\": [{}, {}, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0],",
+                                    tilted.x, tilted.y)));
+  for (const char* builder :
+       {"mesh.use_auto_smooth = True", "mesh.normals_split_custom_set_from_vertices(",
+        "foreach_set(\"use_smooth\", [normals is not None] * count)"})
+    EXPECT_THAT(smooth.script, HasSubstr(builder));
+  // Flat meshes (the box's walls) have none.
+  EXPECT_THAT(smooth.script, HasSubstr("\"normals\": None,"));
+}
+
+TEST(BlenderExport, WarnsThatCyclesMissesCausticsOfPointAndDirectionalLamps) {
+  Material mirror;
+  mirror.name = "mirror";
+  mirror.type = MaterialType::kMirror;
+  mirror.perfect_mirror = true;
+  Scene scene = boxWithQuad(mirror, false);
+  SpotLight spot;
+  spot.intensity = Rgb(100.0f);
+  spot.falloff_exponent = 1;
+  scene.spot_lights.push_back(spot);
+  const BlenderExport with_spot = exportBlenderScript(scene, smallSettings());
+  ASSERT_THAT(with_spot.warnings, SizeIs(1));
+  EXPECT_THAT(with_spot.warnings[0], HasSubstr("the spot lamps' caustics"));
+  EXPECT_THAT(with_spot.script, HasSubstr("# Not exact: the spot lamps' caustics"));
+  scene.directional_lights.push_back({{0, -1, 0}, Rgb(1.0f)});
+  EXPECT_THAT(exportBlenderScript(scene, smallSettings()).warnings,
+              ElementsAre(HasSubstr("the spot and sun lamps' caustics")));
+  // No mirror or glass, or only a black lamp: nothing is missing.
+  scene.materials.back().type = MaterialType::kLambert;
+  EXPECT_THAT(exportBlenderScript(scene, smallSettings()).warnings, IsEmpty());
+  scene.materials.back().type = MaterialType::kMirror;
+  scene.directional_lights.clear();
+  scene.spot_lights[0].intensity = Rgb(0.0f);
+  EXPECT_THAT(exportBlenderScript(scene, smallSettings()).warnings, IsEmpty());
 }
 
 TEST(BlenderExport, PhongExponentBecomesBeckmannRoughness) {
