@@ -1,5 +1,6 @@
 #include "reference/path_tracer.h"
 
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -35,9 +36,11 @@ WalkRandom walkRandom(bool has_medium, PathSampler& sampler, FirstDraw&& first) 
 
 }  // namespace
 
-PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class)
+PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class, bool light_paths)
     : scene_(scene),
       path_class_(path_class),
+      expression_(scene::compilePathClass(path_class)),
+      light_paths_(light_paths),
       embree_(scene),
       triangles_(scene),
       area_lights_(scene, triangles_),
@@ -153,9 +156,13 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
 RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
                                     const glm::vec3& camera_direction, PathSampler& sampler,
                                     const Hit* first_hit) const {
+  using scene::PathEvent;
+  using scene::PathExpression;
   RadianceSample out;
-  auto record = [&](int bounces, const Rgb& contribution) {
-    if (!path_class_.contains(bounces)) return;
+  // `state` is the path expression's automaton after reading E and the vertices so far, from the
+  // eye (scene/path_expression.h): a contribution counts when reading L next accepts.
+  auto record = [&](int state, int bounces, const Rgb& contribution) {
+    if (!expression_.eyeAcceptsLight(state)) return;
     out.total += contribution;
     if (bounces <= 1) out.direct += contribution;
   };
@@ -164,9 +171,14 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
   glm::vec3 direction = camera_direction;
   Rgb throughput(1.0f);
   int bounces = 0;  // scattering vertices so far
+  int state = expression_.eyeStart();
+  // What the first vertex the eye sees is: the light tracer's paths end on a diffuse one.
+  bool eye_vertex_diffuse = false;
   // What the MIS weight of emission reached by a sampled direction needs of the vertex that
-  // sampled it: the density of `direction` under its sampling, and where it was.
+  // sampled it: the density of `direction` under its sampling (none for a specular vertex, which
+  // next-event estimation cannot reach), and where it was.
   float previous_pdf = 0;
+  bool previous_specular = false;
   bool previous_in_medium = false;
   glm::vec3 previous_normal(0.0f);
 
@@ -186,9 +198,9 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
 
     ScatteringVertex vertex;
     std::optional<Bsdf> bsdf;
+    PathEvent event = PathEvent::kMedium;
     if (t_medium < t_surface) {
       // A real collision in the medium: the albedo is the scattering share of it.
-      if (bounces >= path_class_.max_bounces) break;
       vertex.point = origin + t_medium * direction;
       vertex.direction = direction;
       vertex.g = scene_.medium.g;
@@ -197,10 +209,11 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
       // The path leaves the scene: the sky.
       if (has_sky_) {
         const float weight =
-            bounces > 0 ? powerHeuristic(previous_pdf, skySamplingPdf(previous_in_medium,
-                                                                      previous_normal, direction))
-                        : 1.0f;
-        record(bounces, throughput * scene_.sky_radiance * weight);
+            bounces == 0 || previous_specular
+                ? 1.0f
+                : powerHeuristic(previous_pdf,
+                                 skySamplingPdf(previous_in_medium, previous_normal, direction));
+        record(state, bounces, throughput * scene_.sky_radiance * weight);
       }
       break;
     } else {
@@ -209,29 +222,42 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
       const scene::Material& material = scene_.materials[tri.material];
       const glm::vec3 wo = -direction;
 
-      // Emission reached by the camera ray or by sampling (one-sided: front faces only).
+      // Emission reached by the camera ray or by sampling (one-sided: front faces only). A path
+      // the light tracer carries (its vertex next to the light specular, the eye's diffuse) is
+      // left to it.
       const float cos_emitter = glm::dot(tri.normal, wo);
-      if (material.isEmissive() && cos_emitter > 0) {
+      if (material.isEmissive() && cos_emitter > 0 &&
+          !(light_paths_ && previous_specular && eye_vertex_diffuse)) {
         float weight = 1.0f;
-        if (bounces > 0) {
+        if (bounces > 0 && !previous_specular) {
           const float pdf_light = area_lights_.pdfArea(tri_index) * hit.t * hit.t / cos_emitter;
           weight = powerHeuristic(previous_pdf, pdf_light);
         }
-        record(bounces, throughput * material.emission * weight);
+        record(state, bounces, throughput * material.emission * weight);
       }
-      if (bounces >= path_class_.max_bounces) break;
+      // Inside glass (the segment ends on its back side) light is absorbed on the way.
+      if (material.type == scene::MaterialType::kGlass && cos_emitter < 0)
+        throughput *= glm::exp(-material.absorption * hit.t);
       vertex.point = origin + hit.t * direction;
       vertex.normal = cos_emitter >= 0 ? tri.normal : -tri.normal;
+      vertex.shading_normal = triangles_.shadingNormal(tri, vertex.point);
+      if (cos_emitter < 0) vertex.shading_normal = -vertex.shading_normal;
       vertex.epsilon = embree_.rayEpsilon();
-      bsdf.emplace(material, vertex.normal, wo);
+      bsdf.emplace(material, vertex.normal, vertex.shading_normal, wo, cos_emitter >= 0);
       if (bsdf->isBlack()) break;
       vertex.bsdf = &*bsdf;
+      event = bsdf->isSpecular() ? PathEvent::kSpecular : PathEvent::kDiffuse;
     }
 
-    // Scatter: this vertex is bounce number `bounces`.
+    // Scatter: this vertex is bounce number `bounces`. A state from which the class cannot be
+    // reached any more ends the path.
+    state = expression_.eyeStep(state, event);
+    if (state == PathExpression::kDead) break;
+    if (bounces == 0) eye_vertex_diffuse = event == PathEvent::kDiffuse;
     ++bounces;
-    if (bounces >= path_class_.min_bounces)
-      record(bounces, throughput * estimateDirect(vertex, sampler, out.rays));
+    const bool specular = event == PathEvent::kSpecular;
+    if (!specular && expression_.eyeAcceptsLight(state))
+      record(state, bounces, throughput * estimateDirect(vertex, sampler, out.rays));
 
     // Continue the path by sampling the BSDF or the phase function.
     glm::vec3 wi;
@@ -242,11 +268,12 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
       // The phase function is its own density: the weight f/pdf is exactly 1.
     } else {
       const BsdfSample s = bsdf->sample(sampler.get2D(VertexDimension::kDirection));
-      const float cos_wi = glm::dot(vertex.normal, s.wi);
-      if (s.pdf <= 0 || cos_wi <= 0 || maxComponent(s.f) <= 0) break;
+      if (maxComponent(s.weight) <= 0) break;
       wi = s.wi;
       pdf = s.pdf;
-      throughput *= s.f * (cos_wi / s.pdf);
+      throughput *= s.weight;
+      // A refracted path leaves from the other side of the surface.
+      if (s.refracted) vertex.normal = -vertex.normal;
     }
 
     // Russian roulette: survive with probability q and divide by q, which keeps the estimator
@@ -268,6 +295,7 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
     origin = vertex.spawnOrigin();
     direction = wi;
     previous_pdf = pdf;
+    previous_specular = specular;
     previous_in_medium = vertex.inMedium();
     previous_normal = vertex.normal;
   }

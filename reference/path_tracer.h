@@ -1,8 +1,11 @@
 // The reference integrator: unidirectional path tracing with next-event estimation to every light
 // type, combined with BSDF (or phase-function) sampling by multiple importance sampling (power
 // heuristic), unbiased Russian roulette, and a heterogeneous medium integrated by delta tracking
-// (free paths) and ratio tracking (shadow rays). It can restrict itself to a path class
-// (docs/architecture.md, "Path classes").
+// (free paths) and ratio tracking (shadow rays). Mirrors and glass are followed by sampling their
+// one or two directions. It can restrict itself to a path class (docs/rendering.md, "Path
+// classes"), and leave to the light tracer (reference/light_tracer.h) the paths that reach a
+// diffuse surface seen by the eye from a specular one next to the light (docs/rendering.md,
+// "Caustics: light tracing").
 #pragma once
 
 #include "reference/area_light_sampler.h"
@@ -13,6 +16,7 @@
 #include "reference/triangle_table.h"
 #include "scene/medium.h"
 #include "scene/path_class.h"
+#include "scene/path_expression.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -38,7 +42,10 @@ class PathTracer {
   // its paths long before (a lossless cloud of optical depth 10 scatters ~100 times).
   static constexpr int kMaxBounceGuard = 100000;
 
-  PathTracer(const scene::Scene& scene, PathClass path_class);
+  // With `light_paths`, paths whose vertex next to the light is specular and whose vertex seen by
+  // the eye is diffuse (L S (D|S)* D E) are the light tracer's, and this tracer leaves them out;
+  // the two images add up to every path once.
+  PathTracer(const scene::Scene& scene, PathClass path_class, bool light_paths = false);
 
   // The radiance arriving at `origin` from `direction`. `first_hit`, when given, is the closest
   // hit of that ray, already traced by the caller (camera rays go to Embree in coherent batches).
@@ -46,7 +53,11 @@ class PathTracer {
                           const Hit* first_hit = nullptr) const;
 
   const EmbreeScene& embree() const { return embree_; }
+  const TriangleTable& triangles() const { return triangles_; }
+  const AreaLightSampler& areaLights() const { return area_lights_; }
   const PathClass& pathClass() const { return path_class_; }
+  const scene::PathExpression& pathExpression() const { return expression_; }
+  bool leavesLightPaths() const { return light_paths_; }
   // Null when the scene has no medium.
   const MediumTracker* medium() const { return medium_ ? &*medium_ : nullptr; }
 
@@ -65,6 +76,8 @@ class PathTracer {
 
   const scene::Scene& scene_;
   PathClass path_class_;
+  scene::PathExpression expression_;
+  bool light_paths_;
   EmbreeScene embree_;
   TriangleTable triangles_;
   AreaLightSampler area_lights_;

@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "common/parallel_for.h"
 #include "common/progress.h"
+#include "reference/light_tracer.h"
 #include "scene/camera.h"
 
 #include <tbb/blocked_range.h>
@@ -23,6 +24,12 @@ constexpr int kTileSize = 16;
 // Camera rays of one pixel traced together (at most): enough for Embree's packets of 8 or 16 to
 // fill, few enough that the batch's samplers and rays stay in the first-level cache.
 constexpr std::uint32_t kCameraBatch = 64;
+// Light paths are traced in blocks of this many samples of every pixel slot; each tile's splats
+// of a block are kept, then added in tile order, so the sums do not depend on the threads, and
+// the splats held at once stay bounded.
+constexpr std::uint32_t kLightPathBlock = 8;
+// The light paths' sampler seed, apart from the camera paths' (a salt mixed into the seed).
+constexpr std::uint64_t kLightPathSeedSalt = 0x6c69676874706174ull;  // "lightpat"
 
 // Running sums per pixel, in double so that millions of samples do not lose precision. The
 // replicas' sums (for the variance) live in a separate array of replicas × 3 per pixel.
@@ -156,6 +163,23 @@ std::uint32_t replicasOf(const RenderSettings& settings) {
   return settings.replicas > 0 ? settings.replicas : defaultReplicas(settings.spp);
 }
 
+const char* lightPathsName(LightPaths mode) {
+  return mode == LightPaths::kOff ? "off" : "auto";
+}
+
+LightPaths parseLightPaths(const std::string& name) {
+  if (name == "auto") return LightPaths::kAuto;
+  if (name == "off") return LightPaths::kOff;
+  throw InputError(fmt::format(
+      "unknown light-paths mode '{}'; give auto (trace the caustics' paths from the lights when "
+      "the scene has mirrors or glass) or off (camera paths only)",
+      name));
+}
+
+bool tracesLightPaths(const scene::Scene& scene, LightPaths mode) {
+  return mode == LightPaths::kAuto && LightTracer::applies(scene);
+}
+
 std::vector<std::uint32_t> passBoundaries(std::uint32_t spp) {
   std::vector<std::uint32_t> ends;
   for (std::uint64_t n = 1; n < spp; n *= 2) ends.push_back(std::uint32_t(n));
@@ -170,7 +194,10 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   const int height = settings.height;
   const auto start = std::chrono::steady_clock::now();
 
-  PathTracer tracer(scene, settings.path_class);
+  const bool light_paths = tracesLightPaths(scene, settings.light_paths);
+  PathTracer tracer(scene, settings.path_class, light_paths);
+  std::optional<LightTracer> light_tracer;
+  if (light_paths) light_tracer.emplace(scene, tracer, width, height);
   const scene::CameraFrame camera = scene::makeCameraFrame(scene.camera, width, height);
   const std::vector<Tile> tiles = makeTiles(width, height);
   std::vector<PixelSums> sums(std::size_t(width) * height);
@@ -178,7 +205,8 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   std::vector<double> replica_sums(replicas > 1 ? sums.size() * replicas * 3 : 0);
   std::atomic<std::uint64_t> rays{0};
 
-  ProgressBar progress("reference", std::uint64_t(settings.spp) * width * height, "samples");
+  ProgressBar progress(
+      "reference", std::uint64_t(settings.spp) * width * height * (light_paths ? 2 : 1), "samples");
   const bool show_progress = settings.progress;
   // Each pixel's samples are accumulated by one task in sample order, so the sums — and the
   // image — are the same whatever the number of threads or the order of the tiles.
@@ -216,12 +244,52 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
     });
   };
 
+  // Light paths: one per pixel slot and sample, so that sample s of the pass traces as many light
+  // paths as camera paths. A path belongs to replica s % replicas like the slot's camera path.
+  const std::uint64_t light_seed = splitMixFinalise(settings.seed ^ kLightPathSeedSalt);
+  auto traceLightPaths = [&](std::uint32_t first, std::uint32_t end) {
+    std::vector<std::vector<std::pair<LightSplat, std::uint32_t>>> tile_splats(tiles.size());
+    for (std::uint32_t block = first; block < end; block += kLightPathBlock) {
+      const std::uint32_t block_end = std::min(end, block + kLightPathBlock);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](auto range) {
+        std::uint64_t tile_rays = 0;
+        std::vector<LightSplat> splats;
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+          const Tile& tile = tiles[t];
+          auto& out = tile_splats[t];
+          out.clear();
+          for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x)
+              for (std::uint32_t s = block; s < block_end; ++s) {
+                PathSampler sampler(light_seed, std::uint32_t(y * width + x), s, replicas,
+                                    settings.sampler);
+                splats.clear();
+                tile_rays += light_tracer->trace(sampler, splats);
+                for (const LightSplat& splat : splats) out.emplace_back(splat, s % replicas);
+              }
+          if (show_progress)
+            progress.advance(std::uint64_t(block_end - block) * (tile.x1 - tile.x0) *
+                             (tile.y1 - tile.y0));
+        }
+        rays += tile_rays;
+      });
+      for (const auto& out : tile_splats)
+        for (const auto& [splat, replica] : out)
+          for (int c = 0; c < 3; ++c) {
+            sums[splat.pixel].sum[c] += splat.value[c];
+            if (replicas > 1)
+              replica_sums[(splat.pixel * replicas + replica) * 3 + c] += splat.value[c];
+          }
+    }
+  };
+
   const int threads = resolveThreadCount(settings.threads);
   tbb::task_arena arena(threads);
   arena.execute([&] {
     std::uint32_t done = 0;
     for (std::uint32_t end : passBoundaries(settings.spp)) {
       renderPass(done, end);
+      if (light_paths) traceLightPaths(done, end);
       done = end;
       if (on_checkpoint) on_checkpoint(done, meanImage(sums, width, height, done));
     }
@@ -232,6 +300,7 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   RenderResult result;
   const std::uint32_t n = settings.spp;
   result.spp = n;
+  result.light_paths = light_paths;
   result.replicas = replicas;
   result.variance_dof = replicas - 1;
   result.mean = meanImage(sums, width, height, n);

@@ -24,6 +24,17 @@ enum class PixelSampling {
   kCenter,
 };
 
+// Whether light paths join the camera paths (docs/rendering.md, "Caustics: light tracing").
+enum class LightPaths {
+  // When the scene has mirrors or glass and no medium (LightTracer::applies): the caustics'
+  // paths, L S (D|S)* D E, are traced from the lights. Unbiased either way for an area light;
+  // the only way to reach those paths from a spot or directional light.
+  kAuto,
+  // Camera paths only: what a plain path tracer computes, kept to measure what the light paths
+  // buy. Caustics of delta lights are missing.
+  kOff,
+};
+
 struct RenderSettings {
   int width = 512;
   int height = 512;
@@ -35,6 +46,7 @@ struct RenderSettings {
   SamplerKind sampler = SamplerKind::kSobol;
   PixelSampling pixel_sampling = PixelSampling::kArea;
   PathClass path_class;
+  LightPaths light_paths = LightPaths::kAuto;
   int threads = 0;        // 0: all cores. The image does not depend on it.
   bool progress = false;  // draw a progress bar on a terminal
 };
@@ -51,6 +63,7 @@ struct RenderResult {
   image::Image direct;    // mean of the paths with at most one bounce
   image::Image indirect;  // mean of the paths with two bounces or more
   std::uint32_t spp = 0;
+  bool light_paths = false;  // whether light paths were traced (LightPaths::kAuto applied)
   std::uint64_t rays = 0;
   double seconds = 0;
   double raysPerSecond() const { return seconds > 0 ? double(rays) / seconds : 0; }
@@ -79,6 +92,12 @@ std::uint32_t replicasOf(const RenderSettings& settings);
 const char* samplerName(SamplerKind kind);
 // Throws gib::InputError naming the choices for any other name.
 SamplerKind parseSamplerName(const std::string& name);
+// "auto" or "off", as the command line and the metadata name them.
+const char* lightPathsName(LightPaths mode);
+// Throws gib::InputError naming the choices for any other name.
+LightPaths parseLightPaths(const std::string& name);
+// Whether a render of `scene` with `mode` traces light paths.
+bool tracesLightPaths(const scene::Scene& scene, LightPaths mode);
 // "area" or "center", as the command line, suites, metadata and results name them.
 const char* pixelSamplingName(PixelSampling sampling);
 // Throws gib::InputError naming the choices for any other name.

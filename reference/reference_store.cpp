@@ -188,6 +188,8 @@ std::string referenceKey(const scene::Scene& scene, const ReferenceSpec& spec) {
   hasher.addU64(spec.seed);
   hasher.addU64(signedValue(spec.path_class.min_bounces));
   hasher.addU64(signedValue(spec.path_class.max_bounces));
+  // Only for an expression class, so that every key of a class of bounces stays valid.
+  if (!spec.path_class.expression.empty()) hasher.addString("paths=" + spec.path_class.expression);
   // Only when not the box filter, so that every key of a box-filtered reference stays valid.
   if (spec.pixel_sampling != PixelSampling::kArea)
     hasher.addString(std::string("pixel_sampling=") + pixelSamplingName(spec.pixel_sampling));

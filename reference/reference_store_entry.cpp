@@ -43,6 +43,8 @@ StoreEntry entryFromJson(const ordered_json& j) {
   e.spec.seed = spec.at("seed").get<std::uint64_t>();
   e.spec.path_class.min_bounces = readBounceLimit(spec.at("min_bounces"));
   e.spec.path_class.max_bounces = readBounceLimit(spec.at("max_bounces"));
+  // Recorded for an expression class only; an entry without it is a class of bounces.
+  e.spec.path_class.expression = spec.value("paths", std::string());
   // Recorded since pixel-centre references exist; an entry without it is box-filtered.
   e.spec.pixel_sampling = parsePixelSampling(spec.value("pixel_sampling", std::string("area")));
   e.scene_name = j.at("scene_name").get<std::string>();
@@ -57,25 +59,27 @@ StoreEntry entryFromJson(const ordered_json& j) {
 }  // namespace
 
 ordered_json entryToJson(const StoreEntry& e) {
-  return {{"format", kStoreEntryFormat},
-          {"key", e.key},
-          {"spec",
-           {{"scene", e.spec.scene},
-            {"scene_parameters", e.spec.scene_parameters},
-            {"width", e.spec.width},
-            {"height", e.spec.height},
-            {"spp", e.spec.spp},
-            {"seed", e.spec.seed},
-            {"min_bounces", bounceLimit(e.spec.path_class.min_bounces)},
-            {"max_bounces", bounceLimit(e.spec.path_class.max_bounces)},
-            {"pixel_sampling", pixelSamplingName(e.spec.pixel_sampling)}}},
-          {"scene_name", e.scene_name},
-          {"scene_hash", e.scene_hash},
-          {"renderer_version", e.renderer_version},
-          {"gibench_version", e.gibench_version},
-          {"created", e.created},
-          {"render_seconds", e.render_seconds},
-          {"reference_exr_hash", e.exr_hash}};
+  ordered_json j = {{"format", kStoreEntryFormat},
+                    {"key", e.key},
+                    {"spec",
+                     {{"scene", e.spec.scene},
+                      {"scene_parameters", e.spec.scene_parameters},
+                      {"width", e.spec.width},
+                      {"height", e.spec.height},
+                      {"spp", e.spec.spp},
+                      {"seed", e.spec.seed},
+                      {"min_bounces", bounceLimit(e.spec.path_class.min_bounces)},
+                      {"max_bounces", bounceLimit(e.spec.path_class.max_bounces)},
+                      {"pixel_sampling", pixelSamplingName(e.spec.pixel_sampling)}}},
+                    {"scene_name", e.scene_name},
+                    {"scene_hash", e.scene_hash},
+                    {"renderer_version", e.renderer_version},
+                    {"gibench_version", e.gibench_version},
+                    {"created", e.created},
+                    {"render_seconds", e.render_seconds},
+                    {"reference_exr_hash", e.exr_hash}};
+  if (!e.spec.path_class.expression.empty()) j["spec"]["paths"] = e.spec.path_class.expression;
+  return j;
 }
 
 StoreEntry readStoreEntry(const fs::path& dir) {

@@ -21,18 +21,20 @@ inline float skySamplingPdf(bool in_medium, const glm::vec3& normal, const glm::
 
 struct ScatteringVertex {
   glm::vec3 point{0.0f};
-  const Bsdf* bsdf = nullptr;  // null inside the medium
-  glm::vec3 normal{0.0f};      // surfaces: geometric normal turned towards wo
-  float epsilon = 0;           // surfaces: offset of spawned rays along the normal
-  glm::vec3 direction{0.0f};   // medium: propagation direction of the arriving path
-  float g = 0;                 // medium: Henyey–Greenstein asymmetry
+  const Bsdf* bsdf = nullptr;      // null inside the medium
+  glm::vec3 normal{0.0f};          // surfaces: geometric normal turned towards wo
+  glm::vec3 shading_normal{0.0f};  // surfaces: shading normal on the same side
+  float epsilon = 0;               // surfaces: offset of spawned rays along the normal
+  glm::vec3 direction{0.0f};       // medium: propagation direction of the arriving path
+  float g = 0;                     // medium: Henyey–Greenstein asymmetry
 
   bool inMedium() const { return bsdf == nullptr; }
 
-  // The scattered fraction towards wi: f·cos θ on a surface, the phase function in the medium.
-  scene::Rgb evaluate(const glm::vec3& wi) const {
+  // The scattered fraction towards wi: f·cos θ on a surface (Bsdf::evaluateProjected), the
+  // phase function in the medium.
+  scene::Rgb evaluate(const glm::vec3& wi, Transport transport = Transport::kRadiance) const {
     if (inMedium()) return scene::Rgb(henyeyGreenstein(glm::dot(direction, wi), g));
-    return bsdf->evaluate(wi) * std::max(0.0f, glm::dot(normal, wi));
+    return bsdf->evaluateProjected(wi, transport);
   }
   // Density with which the vertex's own sampling strategy picks wi.
   float pdf(const glm::vec3& wi) const {

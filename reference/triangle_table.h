@@ -14,6 +14,10 @@ struct TriangleRecord {
   glm::vec3 normal;      // unit front normal e1 × e2 / |e1 × e2|
   float area = 0;
   std::uint32_t material = 0;
+  // Index of the triangle's three vertex normals in the table's normal list; kFlat when its mesh
+  // has none (it is shaded with `normal`).
+  static constexpr std::uint32_t kFlat = ~0u;
+  std::uint32_t shading_normals = kFlat;
 
   glm::vec3 point(float b1, float b2) const { return p0 + b1 * e1 + b2 * e2; }
 };
@@ -30,9 +34,16 @@ class TriangleTable {
   }
   std::size_t size() const { return triangles_.size(); }
 
+  // The shading normal at `point` of a triangle (docs/rendering.md, "Shading normals"): its
+  // vertex normals interpolated by the point's barycentric coordinates, unit, on the front side;
+  // the geometric normal for a flat triangle, or where the interpolation degenerates or leaves the
+  // front hemisphere (a vertex normal pointing backwards would turn the surface inside out).
+  glm::vec3 shadingNormal(const TriangleRecord& triangle, const glm::vec3& point) const;
+
  private:
   std::vector<std::uint32_t> mesh_offsets_;
   std::vector<TriangleRecord> triangles_;
+  std::vector<glm::vec3> normals_;  // three per smooth triangle
 };
 
 }  // namespace gib::ref

@@ -50,7 +50,8 @@ TEST(SamplingChiSquare, PhongMaterialSamplerMatchesItsPdf) {
   m.specular = scene::Rgb(0.5f);
   m.exponent = 20;
   const glm::vec3 wo = glm::normalize(glm::vec3(0.6f, 0.1f, 0.5f));
-  const Bsdf bsdf(m, {0, 0, 1}, wo);
+  const glm::vec3 n(0, 0, 1);
+  const Bsdf bsdf(m, n, n, wo, /*outside=*/true);
   // Glossy-lobe samples may fall below the surface, where Bsdf::pdf is zero because such a path
   // ends; the sampler's density there is the glossy share (0.5 / 0.8 by luminance) of the lobe.
   EXPECT_TRUE(kFamily.chiSquare(
