@@ -83,7 +83,7 @@ void listTechniques() {
   for (const rt::TechniqueInfo& info : rt::techniqueCatalogue())
     width = std::max(width, info.name.size());
   fmt::print("{:<{}} {}\n", "reference", width,
-             "Embree path tracer (ground truth); options: --spp --seed --min-bounces "
+             "Embree path tracer (ground truth); options: --spp --seed --paths --min-bounces "
              "--max-bounces --checkpoints --threads");
   for (const rt::TechniqueInfo& info : rt::techniqueCatalogue()) {
     fmt::print("{:<{}} {}\n", info.name, width, info.description);

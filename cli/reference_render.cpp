@@ -5,12 +5,30 @@
 #include "image/exr_io.h"
 #include "reference/reference_output.h"
 #include "scene/builtin_scenes.h"
+#include "scene/path_expression.h"
 
 #include <fmt/format.h>
 
 #include <filesystem>
 
 namespace gib::cli {
+
+namespace {
+
+// The class given by --paths or by the bounce options, its shorthand (never both).
+scene::PathClass pathClassOf(const RenderOptions& o, const CLI::App& app) {
+  const std::vector<std::string> bounces = givenOptions(app, {"--min-bounces", "--max-bounces"});
+  if (givenOptions(app, {"--paths"}).empty())
+    return scene::PathClass(o.min_bounces, o.max_bounces.value_or(scene::PathClass::kUnlimited));
+  if (!bounces.empty())
+    throw InputError(fmt::format(
+        "--paths and {} both choose the path class; give one (--min-bounces a --max-bounces b is "
+        "--paths 'L(D|S|P){{a,b}}E')",
+        joinNames(bounces, " and ")));
+  return scene::PathClass::ofExpression(scene::PathExpression::parse(o.paths).text());
+}
+
+}  // namespace
 
 int renderReference(const RenderOptions& o, const CLI::App& app) {
   const std::vector<std::string> foreign =
@@ -19,11 +37,12 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   if (!foreign.empty())
     throw InputError(fmt::format(
         "{} applies to real-time techniques, not the reference; the reference takes --spp, "
-        "--seed, --min-bounces, --max-bounces",
+        "--seed, --paths, --min-bounces, --max-bounces",
         joinNames(foreign, ", ")));
   if (o.spp <= 0)
     throw InputError(
         fmt::format("--spp {} renders nothing; give at least 1 sample per pixel", o.spp));
+  const scene::PathClass path_class = pathClassOf(o, app);
   const std::filesystem::path out(o.out);
   ref::checkOutputPath(out);
   const scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
@@ -39,8 +58,8 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   settings.replicas = std::uint32_t(o.replicas);
   settings.sampler = ref::parseSamplerName(o.sampler);
   settings.pixel_sampling = ref::parsePixelSampling(o.pixel_sampling);
-  settings.path_class.min_bounces = o.min_bounces;
-  if (o.max_bounces) settings.path_class.max_bounces = *o.max_bounces;
+  settings.light_paths = ref::parseLightPaths(o.light_paths);
+  settings.path_class = path_class;
   settings.threads = o.threads;
   settings.progress = true;
   ref::validateRenderSettings(settings);

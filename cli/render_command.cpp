@@ -43,6 +43,13 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->capture_default_str()
       ->group(kReference);
   render
+      ->add_option("--light-paths", o->light_paths,
+                   "auto (trace the caustics' paths, L S (D|S)* D E, from the lights when the "
+                   "scene has mirrors or glass) or off (camera paths only: caustics of spot and "
+                   "directional lights go missing)")
+      ->capture_default_str()
+      ->group(kReference);
+  render
       ->add_option("--pixel-sampling", o->pixel_sampling,
                    "area (a box filter over each pixel, anti-aliased) or center (every camera ray "
                    "through the pixel centre, as a rasteriser samples: the reference a real-time "
@@ -50,8 +57,15 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->capture_default_str()
       ->group(kReference);
   render
+      ->add_option("--paths", o->paths,
+                   "only the paths this expression matches, in Heckbert's notation read from the "
+                   "light to the eye: L(D|S|P)*E all, LS+DE caustics on diffuse surfaces, LDSE a "
+                   "diffuse surface seen in a mirror (docs/rendering.md, \"Path classes\")")
+      ->group(kReference);
+  render
       ->add_option("--min-bounces", o->min_bounces,
-                   "only paths with at least this many bounces (0: emitters seen directly)")
+                   "only paths with at least this many bounces (0: emitters seen directly); "
+                   "with --max-bounces b, short for --paths 'L(D|S|P){a,b}E'")
       ->capture_default_str()
       ->group(kReference);
   render

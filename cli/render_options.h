@@ -23,8 +23,10 @@ struct RenderOptions {
   long long replicas = 0;  // 0: ref::defaultReplicas
   std::string sampler = "sobol";
   std::string pixel_sampling = "area";
+  std::string light_paths = "auto";  // ref::LightPaths
   int min_bounces = 0;
   std::optional<int> max_bounces;
+  std::string paths;  // a path expression (scene/path_expression.h); exclusive with the bounces
   int threads = 0;
   bool checkpoints = false;
   // Techniques only.

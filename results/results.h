@@ -159,7 +159,7 @@ struct ReferenceUse {
   std::string key;  // reference store key
   int spp = 0;
   unsigned long long seed = 0;
-  std::string path_class;  // "LE + LDE", "all paths"
+  std::string path_class;  // scene::describePathClass: "L(D|S|P){0,1}E", "LS+DE"
   bool store_hit = false;  // found in the store rather than rendered by this run
   double render_seconds = 0;
   // Where the reference's camera rays go: "center" (through each pixel's centre, the rasteriser's
@@ -228,7 +228,7 @@ struct JobResult {
   Assignments parameters;  // technique parameters (every parameter, defaults included)
   Assignments scene_parameters;
   int width = 0, height = 0;
-  std::string path_class;  // of the technique ("all paths" for the reference)
+  std::string path_class;  // of the technique (every path, "L(D|S|P)*E", for the reference)
   ReferenceUse reference;  // the reference of the technique's path class
   // Against the reference of the same path class: the technique's approximation error.
   NamedValues metrics;

@@ -23,8 +23,13 @@ std::map<std::string, std::string> outputMetadata(const Scene& scene, std::strin
   m["gibench/scene_parameters"] = scene_parameters.dump();
   m["gibench/width"] = std::to_string(width);
   m["gibench/height"] = std::to_string(height);
-  m["gibench/min_bounces"] = std::to_string(path_class.min_bounces);
-  m["gibench/max_bounces"] = unlimited ? "unlimited" : std::to_string(path_class.max_bounces);
+  // A class is an expression or a bounce range (scene/path_class.h): the image names the one given.
+  if (!path_class.expression.empty()) {
+    m["gibench/paths"] = path_class.expression;
+  } else {
+    m["gibench/min_bounces"] = std::to_string(path_class.min_bounces);
+    m["gibench/max_bounces"] = unlimited ? "unlimited" : std::to_string(path_class.max_bounces);
+  }
   m["gibench/path_class"] = describePathClass(path_class);
   return m;
 }

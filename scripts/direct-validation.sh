@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Reproduces docs/direct-validation.md: `direct` on the Cornell box against the reference
-# restricted to its path class (LE + LDE), for each shadow filter and a growing number of light
+# restricted to its path class (LE|LDE), for each shadow filter and a growing number of light
 # samples, with error maps that show where shadow-map artefacts remain.
 # Usage: scripts/direct-validation.sh [OUT_DIR] (default out/direct-validation); GIB_SIZE, GIB_SPP.
 set -euo pipefail

@@ -37,8 +37,9 @@ double secondsSince(Clock::time_point start) {
 
 // The class the reference is rendered for: the technique's own unless the suite says otherwise.
 scene::PathClass referenceClass(const PreparedJob& p) {
-  scene::PathClass c = p.path_class;
   const ReferenceSettings& r = p.job->settings.reference;
+  if (r.paths) return scene::PathClass::ofExpression(*r.paths);
+  scene::PathClass c = p.path_class;
   if (r.min_bounces) c.min_bounces = *r.min_bounces;
   if (r.max_bounces) c.max_bounces = *r.max_bounces;
   return c;
@@ -295,6 +296,8 @@ std::string jobHash(const PreparedJob& p) {
                     s.reference.min_bounces.value_or(-1), s.reference.max_bounces.value_or(-1)})
     hasher.addU64(std::uint64_t(std::int64_t(value)));
   hasher.addU64(s.reference.seed);
+  // Only when given, so that the hash of every job with a class of bounces stays the same.
+  if (s.reference.paths) hasher.addString("paths=" + *s.reference.paths);
   hasher.addString(ref::pixelSamplingName(pixelSampling(p)));
   for (const std::string& metric : s.metrics) hasher.addString(metric);
   for (int checkpoint : s.checkpoints) hasher.addU64(std::uint64_t(checkpoint));

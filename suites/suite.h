@@ -22,10 +22,13 @@ inline constexpr const char* kReferenceTechnique = "reference";
 struct ReferenceSettings {
   int spp = 1024;
   unsigned long long seed = 0;
-  // The path class (scene/path_class.h). Absent: the technique's own (Technique::pathClass()),
-  // every path for a reference case. max_bounces may be PathClass::kUnlimited.
+  // The path class (scene/path_class.h): a range of bounces, or a path expression (its text as
+  // PathExpression::text() gives it), never both. Absent: the technique's own
+  // (Technique::pathClass()), every path for a reference case. max_bounces may be
+  // PathClass::kUnlimited.
   std::optional<int> min_bounces;
   std::optional<int> max_bounces;
+  std::optional<std::string> paths;
   // Where the reference's camera rays go ("center" or "area", ref::parsePixelSampling). Absent:
   // pixel centres for a technique case (its error is its lighting's, not anti-aliasing's), the
   // box filter for a reference case (the reference's own convergence, as other renderers do it).

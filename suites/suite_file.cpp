@@ -12,6 +12,7 @@
 #include "realtime/technique.h"
 #include "scene/builtin_scenes.h"
 #include "scene/path_class.h"
+#include "scene/path_expression.h"
 
 #include <fmt/format.h>
 
@@ -44,8 +45,8 @@ constexpr long long kMaxRepeats = 100;
 
 const std::vector<std::string> kSettingKeys = {"width",  "height",  "metrics",  "frames",
                                                "warmup", "repeats", "reference"};
-const std::vector<std::string> kReferenceKeys = {"spp", "seed", "min_bounces", "max_bounces",
-                                                 "pixel_sampling"};
+const std::vector<std::string> kReferenceKeys = {"spp",         "seed",  "min_bounces",
+                                                 "max_bounces", "paths", "pixel_sampling"};
 
 bool isSafeName(std::string_view name) {
   return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
@@ -73,6 +74,7 @@ struct Settings {
   const toml::node* height_node = nullptr;
   const toml::node* min_bounces_node = nullptr;
   const toml::node* max_bounces_node = nullptr;
+  const toml::node* paths_node = nullptr;
 };
 
 // The metric names of `metrics = "all"`, "relmse,flip" or ["relmse", "flip"], in catalogue
@@ -108,7 +110,7 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
   const TomlTableReader t(parent.errors(),
                           requireTomlTable(parent.errors(), node, name,
                                            fmt::format("write [{}] with spp, seed, min_bounces, "
-                                                       "max_bounces or pixel_sampling",
+                                                       "max_bounces, paths or pixel_sampling",
                                                        name)),
                           name, fmt::format("[{}]", name), kReferenceKeys);
   if (const toml::node* n = t.find("spp"))
@@ -134,6 +136,15 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
       s.run.reference.max_bounces = static_cast<int>(n->as_integer()->get());
     }
     s.max_bounces_node = n;
+  }
+  if (const toml::node* n = t.find("paths")) {
+    const std::string text = t.string(*n, "paths");
+    try {
+      s.run.reference.paths = scene::PathExpression::parse(text).text();
+    } catch (const InputError& e) {
+      t.errors().failWith(n->source(), fmt::format("{}: {}", t.path("paths"), e.what()));
+    }
+    s.paths_node = n;
   }
   if (const toml::node* n = t.find("pixel_sampling")) {
     const std::string sampling = t.string(*n, "pixel_sampling");
@@ -181,6 +192,12 @@ void checkSettings(const TomlErrorReporter& errors, const Settings& s) {
                 fmt::format("reference min_bounces {} is above max_bounces {}", *r.min_bounces,
                             *r.max_bounces),
                 "give min_bounces <= max_bounces");
+  if (r.paths && (r.min_bounces || r.max_bounces))
+    errors.fail(*s.paths_node,
+                fmt::format("reference paths and {} both choose the path class",
+                            r.min_bounces ? "min_bounces" : "max_bounces"),
+                "give one of them (min_bounces = a with max_bounces = b is paths = "
+                "\"L(D|S|P){a,b}E\")");
 }
 
 const ParameterSpec* findSpec(const ParameterTable& table, std::string_view key) {

@@ -18,6 +18,7 @@
 //   seed = 0                              # >= 0; default 0
 //   min_bounces = 0                       # optional path class; absent: the technique's own
 //   max_bounces = 1                       #   (Technique::pathClass()); "unlimited" for all paths
+//   paths = "LS+DE"                       # or a path expression instead of the bounces
 //
 //   [[case]]                              # one or more
 //   name = "chamber-direct"               # optional, unique; default "<scene>-<technique>"

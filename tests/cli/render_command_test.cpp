@@ -76,6 +76,25 @@ TEST(RenderCommand, PixelsAreBitIdenticalWithOneOrTwoThreads) {
   EXPECT_EQ(a.metadata, b.metadata);
 }
 
+// A path expression's class is recorded as given, in place of the bounce range it replaces.
+TEST(RenderCommand, RecordsThePathExpressionInTheMetadata) {
+  TempDir dir;
+  CommandResult r = runGibench(renderArgs(dir / "c.exr", {"--paths", "L S+ D E"}), dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  image::ExrFile exr = image::readExr(dir / "c.exr");
+  EXPECT_EQ(exr.metadata["gibench/paths"], "LS+DE");
+  EXPECT_EQ(exr.metadata["gibench/path_class"], "LS+DE");
+  EXPECT_FALSE(exr.metadata.count("gibench/min_bounces"));
+  EXPECT_FALSE(exr.metadata.count("gibench/max_bounces"));
+  // The bounce options are the shorthand: their class is written in the same notation.
+  r = runGibench(renderArgs(dir / "b.exr", {"--min-bounces", "1", "--max-bounces", "2"}),
+                 dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  exr = image::readExr(dir / "b.exr");
+  EXPECT_EQ(exr.metadata["gibench/path_class"], "L(D|S|P){1,2}E");
+  EXPECT_FALSE(exr.metadata.count("gibench/paths"));
+}
+
 struct BadInput {
   std::string name;
   std::vector<std::string> args;  // "OUT" is replaced by the output path
@@ -133,6 +152,20 @@ INSTANTIATE_TEST_SUITE_P(
                  {"render", "--scene", "cornell", "--min-bounces", "3", "--max-bounces", "1",
                   "--out", "OUT"},
                  "--min-bounces"},
+        BadInput{"paths_syntax_error",
+                 {"render", "--scene", "cornell", "--paths", "L(D", "--out", "OUT"},
+                 "path expression 'L(D': column 2: '(' is not closed"},
+        BadInput{"paths_matching_no_light_path",
+                 {"render", "--scene", "cornell", "--paths", "DE", "--out", "OUT"},
+                 "matches no light path"},
+        BadInput{"paths_with_bounces",
+                 {"render", "--scene", "cornell", "--paths", "LDE", "--max-bounces", "1", "--out",
+                  "OUT"},
+                 "--paths and --max-bounces both choose the path class"},
+        BadInput{"paths_for_technique",
+                 {"render", "--scene", "cornell", "--technique", "direct", "--paths", "LDE",
+                  "--out", "OUT"},
+                 "--paths applies to the reference path tracer"},
         BadInput{"replicas_not_dividing_spp",
                  {"render", "--scene", "cornell", "--spp", "8", "--replicas", "3", "--out", "OUT"},
                  "--replicas 3 does not divide --spp 8"},

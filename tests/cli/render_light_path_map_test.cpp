@@ -35,7 +35,7 @@ TEST(RenderLightPathMap, WritesTheImageItsFiguresAndThePreprocessingBreakdown) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const image::ExrFile exr = image::readExr(dir / "lpm.exr");
   EXPECT_EQ(exr.metadata.at("gibench/technique"), "light_path_map");
-  EXPECT_EQ(exr.metadata.at("gibench/path_class"), "L(D|S)*E");
+  EXPECT_EQ(exr.metadata.at("gibench/path_class"), "L(D|S|P)*E");
   for (const char* aux :
        {"lpm-indirect.png", "lpm-entry-points.png", "lpm-atlas.png", "lpm-local-and-lpm.png"})
     EXPECT_TRUE(fs::exists(dir / aux)) << aux << "\n" << r.out;

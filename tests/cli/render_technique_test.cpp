@@ -48,7 +48,7 @@ TEST(RenderTechnique, DirectWritesExrPngTimingsAndTable) {
   EXPECT_EQ(exr.metadata["gibench/technique"], "direct");
   EXPECT_NE(exr.metadata["gibench/parameters"].find("\"shadow\":\"pcf\""), std::string::npos)
       << exr.metadata["gibench/parameters"];
-  EXPECT_EQ(exr.metadata["gibench/path_class"], "LE + LDE");
+  EXPECT_EQ(exr.metadata["gibench/path_class"], "L(D|S|P){0,1}E");
   EXPECT_EQ(exr.metadata["gibench/max_bounces"], "1");
   EXPECT_EQ(exr.metadata["gibench/frames"], "3");
   for (const char* key : {"gibench/version", "gibench/scene_hash", "gibench/gl_renderer",
@@ -97,8 +97,8 @@ TEST(ListCommand, ListsTechniquesWithTheirParameters) {
   TempDir dir;
   CommandResult r = runGibench({"list", "techniques"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* part :
-       {"reference", "direct", "shadow", "light_samples", "shadow_map_size", "LE + LDE"})
+  for (const char* part : {"reference", "direct", "shadow", "light_samples", "shadow_map_size",
+                           "path class (defaults): L(D|S|P){0,1}E"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
 }
 

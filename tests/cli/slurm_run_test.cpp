@@ -178,7 +178,7 @@ TEST_F(SlurmRun, ArraysMergeLikeALocalRunSurviveCancelAndFailureAndShareTheStore
     const fs::path out = dir_ / "smoke-slurm";
     const test::CommandResult r = submit(smoke, out, dir_ / "smoke-store", {"--wait"});
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
-    // The reference job, and the LE + LDE reference of the direct jobs (stochastic radiosity is
+    // The reference job, and the LE|LDE reference of the direct jobs (stochastic radiosity is
     // measured against the full reference, which the reference job renders).
     EXPECT_THAT(r.out, HasSubstr("reference array (2 tasks)"));
     EXPECT_THAT(r.out, HasSubstr("technique array (4 tasks)"));
@@ -265,7 +265,7 @@ TEST_F(SlurmRun, ArraysMergeLikeALocalRunSurviveCancelAndFailureAndShareTheStore
     EXPECT_EQ(awaitMerge(dir_ / "first"), 0);
     EXPECT_EQ(awaitMerge(dir_ / "second"), 0);
     // Three distinct references, whichever task got each first: the reference job's (all paths,
-    // box-filtered) and the technique jobs' pixel-centre ones (LE + LDE; all paths).
+    // box-filtered) and the technique jobs' pixel-centre ones (LE|LDE; all paths).
     EXPECT_EQ(referencesRendered(dir_ / "first") + referencesRendered(dir_ / "second"), 3);
   }
 

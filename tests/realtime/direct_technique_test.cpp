@@ -1,4 +1,4 @@
-// `direct` against the reference restricted to its path class (LE + LDE): each light type on a
+// `direct` against the reference restricted to its path class (LE|LDE): each light type on a
 // plane, where shadow maps see no occluder and the result must match, and the Cornell box, where
 // the error must fall as light samples grow.
 #include "realtime/technique_runner.h"

@@ -305,7 +305,7 @@ TEST_F(HemisphericalGather, APatchsIrradianceIsItsFormFactorTimesPi) {
 
 // On the Cornell box against the reference restricted to two bounces, each projection's image (the
 // voxel slices' too: 64 slabs of 64² per axis, the box's near geometry drawn) is less than half as
-// far (relMSE) as `direct`'s, which leaves the bounce out, and its path class is LE + LDE + LDDE.
+// far (relMSE) as `direct`'s, which leaves the bounce out, and its path class is LE|LDE|LDDE.
 // The reference is a fixed render (seed 0), so this is deterministic.
 TEST(HemisphericalGatherTechnique, OneGatheredBounceHalvesTheErrorOfDirectLightAlone) {
   const scene::Scene scene = scene::loadScene("cornell", {});

@@ -205,7 +205,7 @@ TEST_F(IrradianceCacheSplatting, SplattingAConstantFieldReconstructsItExactly) {
 
 // On the Cornell box against the reference restricted to two bounces, the CPU cache and both GPU
 // samplers are well under half as far (relMSE) as `direct`, which leaves the bounce out, with
-// path class LE + LDE + LDDE. The CPU cache refines beyond its first round, whose 32-pixel grid
+// path class LE|LDE|LDDE. The CPU cache refines beyond its first round, whose 32-pixel grid
 // has (64/32)² = 4 candidates, and the GPU's record count is the CPU's within 10% (the same
 // traversal; records differ only by their R). The reference is a fixed render (seed 0).
 TEST(IrradianceCacheTechniques, OneCachedBounceCutsTheErrorOfDirectLightAlone) {

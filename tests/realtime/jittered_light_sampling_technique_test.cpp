@@ -1,4 +1,4 @@
-// `jittered_light_sampling` against the reference restricted to its path class (LE + LDE): an
+// `jittered_light_sampling` against the reference restricted to its path class (LE|LDE): an
 // area light over a plane, where nothing occludes and the result must match, and the Cornell
 // box, where its penumbrae must beat `direct`'s sixteen shadow-mapped light samples.
 #include "realtime/technique_runner.h"

@@ -127,7 +127,7 @@ TEST_F(HtmlReport, JobPageHasMetricsImagesTimingsConvergenceAndPaperValues) {
   write();
   const std::string html = jobPage(1);
   // Metric tables against the class and the full reference.
-  EXPECT_NE(html.find("against the reference of its class (LE + LDE, "), std::string::npos);
+  EXPECT_NE(html.find("against the reference of its class (L(D|S|P){0,1}E, "), std::string::npos);
   EXPECT_NE(html.find("against the full reference (all paths, "), std::string::npos);
   EXPECT_NE(html.find("0.0084"), std::string::npos);  // 4 × relmse against all paths
   // The viewer with its four pictures and the FLIP colour bar.

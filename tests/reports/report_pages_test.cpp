@@ -88,8 +88,9 @@ TEST_F(HtmlReportPages, IndexNamesTheReferenceBesideEachNumber) {
   const std::string index = writeIndex();
   const std::string pcf = matrixEntry(index, results_.jobs[kPcf]);
   ASSERT_FALSE(pcf.empty()) << index;
-  EXPECT_NE(pcf.find("0.0021</span> <span class=\"against\">vs LE + LDE, pixel centres</span>"),
-            std::string::npos)
+  EXPECT_NE(
+      pcf.find("0.0021</span> <span class=\"against\">vs L(D|S|P){0,1}E, pixel centres</span>"),
+      std::string::npos)
       << pcf;
   // The reference job's number measures its last checkpoint against the stored reference.
   const std::string reference = matrixEntry(index, results_.jobs[kReference]);
@@ -103,7 +104,7 @@ TEST_F(HtmlReportPages, IndexNamesTheReferenceBesideEachNumber) {
             countOccurrences(matrix, "<span class=\"metric-name\""));
   // An anti-aliased reference is said to be one.
   results_.jobs[kPcf].reference.pixel_sampling = "area";
-  EXPECT_NE(matrixEntry(writeIndex(), results_.jobs[kPcf]).find("vs LE + LDE, box-filtered"),
+  EXPECT_NE(matrixEntry(writeIndex(), results_.jobs[kPcf]).find("vs L(D|S|P){0,1}E, box-filtered"),
             std::string::npos);
 }
 
@@ -342,10 +343,10 @@ TEST_F(HtmlReportPages, DisagreementMaskAndCountAreShownWhenPresent) {
 TEST_F(HtmlReportPages, JobPageSaysTheReferencesPixelSampling) {
   results_.jobs[kVsm].reference.pixel_sampling = "area";
   writeIndex();
-  EXPECT_NE(page(kPcf).find("against the reference of its class (LE + LDE, pixel centres)"),
+  EXPECT_NE(page(kPcf).find("against the reference of its class (L(D|S|P){0,1}E, pixel centres)"),
             std::string::npos);
   EXPECT_NE(page(kPcf).find("pixel sampling: pixel centres."), std::string::npos);
-  EXPECT_NE(page(kVsm).find("(LE + LDE, box-filtered over the pixel)"), std::string::npos);
+  EXPECT_NE(page(kVsm).find("(L(D|S|P){0,1}E, box-filtered over the pixel)"), std::string::npos);
 }
 
 TEST_F(HtmlReportPages, ReferenceJobSaysWhichCheckpointItComparesWithWhichReference) {

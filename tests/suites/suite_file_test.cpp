@@ -395,6 +395,29 @@ TEST_F(SuiteFileTest, BounceLimits) {
                         "\"unlimited\""));
 }
 
+TEST_F(SuiteFileTest, PathExpressionClasses) {
+  const Suite suite = load(replaced(kSuite, "max_bounces = \"unlimited\"", "paths = \"L S+ D E\""));
+  EXPECT_EQ(suite.cases[1].settings.reference.paths, "LS+DE");  // as PathExpression::text()
+  EXPECT_FALSE(suite.cases[1].settings.reference.max_bounces.has_value());
+  EXPECT_FALSE(suite.cases[0].settings.reference.paths.has_value());
+
+  const std::string syntax = replaced(kSuite, "max_bounces = \"unlimited\"", "paths = \"L(D\"");
+  EXPECT_THAT(expectErrorAt(syntax, "paths = \"L(D\""),
+              HasSubstr("case.reference.paths: path expression 'L(D': column 2: '(' is not "
+                        "closed; add ')'"));
+  const std::string none = replaced(kSuite, "max_bounces = \"unlimited\"", "paths = \"DE\"");
+  EXPECT_THAT(expectErrorAt(none, "paths = \"DE\""), HasSubstr("matches no light path"));
+  // The bounces are its shorthand: one or the other, also across [defaults] and a case.
+  const std::string both =
+      replaced(kSuite, "max_bounces = \"unlimited\"", "max_bounces = 1\npaths = \"LDE\"");
+  EXPECT_THAT(expectErrorAt(both, "paths = \"LDE\""),
+              HasSubstr("reference paths and max_bounces both choose the path class; give one"));
+  const std::string inherited = replaced(replaced(kSuite, "seed = 7", "seed = 7\nmin_bounces = 1"),
+                                         "max_bounces = \"unlimited\"", "paths = \"LDE\"");
+  EXPECT_THAT(expectErrorAt(inherited, "paths = \"LDE\""),
+              HasSubstr("reference paths and min_bounces both choose the path class"));
+}
+
 TEST_F(SuiteFileTest, DuplicateCaseNames) {
   const std::string text =
       replaced(kSuite, "name = \"direct-sweep\"", "name = \"cornell-reference\"");

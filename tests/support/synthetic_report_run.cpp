@@ -93,8 +93,8 @@ results::JobResult syntheticTechniqueJob(const std::string& sweep, double relmse
   results::JobResult job = cornellJob("cornell-direct/" + sweep, "cornell-direct", "direct");
   job.scene_hash = "5f1e0c2b9a8d7e6f5f1e0c2b9a8d7e6f";
   job.parameters = {{"shadow", "pcf"}, {"light_samples", "4"}};
-  job.path_class = "LE + LDE";
-  job.reference = {"ref-direct-0001", 256, 0, "LE + LDE", true, 0};
+  job.path_class = "L(D|S|P){0,1}E";
+  job.reference = {"ref-direct-0001", 256, 0, "L(D|S|P){0,1}E", true, 0};
   job.metrics = {{"relmse", relmse}, {"flip_mean", 0.08}, {"psnr", 31.5}};
   job.full_reference = results::ReferenceUse{"ref-all-0001", 256, 0, "all paths", false, 12.5};
   job.metrics_full = {{"relmse", 4 * relmse}, {"flip_mean", 0.21}, {"psnr", 22.0}};

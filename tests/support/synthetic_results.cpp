@@ -37,8 +37,8 @@ results::JobResult syntheticJob(const std::string& id, const results::NamedValue
   job.parameters = {{"shadow", "pcf"}, {"light_samples", "16"}};
   job.width = 64;
   job.height = 48;
-  job.path_class = "LE + LDE";
-  job.reference = {"ref-key-direct", 256, 7, "LE + LDE", true, 0.0};
+  job.path_class = "L(D|S|P){0,1}E";
+  job.reference = {"ref-key-direct", 256, 7, "L(D|S|P){0,1}E", true, 0.0};
   job.metrics = metrics;
   if (!frame_samples_ms.empty()) job.timings = frameTimings(frame_samples_ms);
   job.seconds = 1.5;

@@ -17,7 +17,7 @@ TechniqueInfo directTechniqueInfo() {
   TechniqueInfo info;
   info.name = "direct";
   info.description =
-      "direct illumination (LE + LDE) with shadow maps: hard, PCF or variance; area lights and "
+      "direct illumination (LE|LDE) with shadow maps: hard, PCF or variance; area lights and "
       "sky by light samples";
   info.source = "Szirmay-Kalos et al., GPU-Based Techniques for Global Illumination Effects, Ch. 4";
   info.parameters = SurfaceLighting::parameters();

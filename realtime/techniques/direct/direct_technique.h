@@ -1,4 +1,4 @@
-// `direct`: direct illumination only (path class LE + LDE) from every light of the scene model
+// `direct`: direct illumination only (path class LE|LDE) from every light of the scene model
 // with shadow maps (book Ch. 4): hard, percentage-closer filtered or variance shadow maps; area
 // lights and the sky as many light samples, a shadow map each, so that the image converges to the
 // exact direct illumination as the sample count grows. Deferred: one g-buffer pass, then per

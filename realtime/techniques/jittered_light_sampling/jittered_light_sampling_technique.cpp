@@ -154,7 +154,7 @@ TechniqueInfo jitteredLightSamplingTechniqueInfo() {
   TechniqueInfo info;
   info.name = "jittered_light_sampling";
   info.description =
-      "direct illumination (LE + LDE) with area lights sampled by rasterizing the light and its "
+      "direct illumination (LE|LDE) with area lights sampled by rasterizing the light and its "
       "occluders from every pixel: occlusion query, regular or jittered (1, 4, 8 per pixel)";
   info.source =
       "Fournier & Péroche, Speeding up global illumination computations using programmable "
