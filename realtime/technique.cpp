@@ -88,6 +88,13 @@ std::optional<std::string> missingNeed(const TechniqueInfo& info, const scene::S
 }
 
 std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const scene::Scene& scene) {
+  // The shading passes know Lambert and Phong only: a technique that does not say it renders
+  // mirrors or glass would draw them as diffuse surfaces, a wrong image without an error.
+  if (scene.hasIdealSpecular() && !info.hasNeed(TechniqueNeed::kSpecularMaterials))
+    return fmt::format(
+        "technique '{}' does not render ideal mirrors or glass and scene '{}' has them; use the "
+        "reference, or a scene without them",
+        info.name, scene.name);
   for (TechniqueNeed need : info.needs) {
     switch (need) {
       case TechniqueNeed::kRayCaster:
@@ -99,9 +106,7 @@ std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const sce
             "'cloud' or a scene file with particles",
             info.name, scene.name);
       case TechniqueNeed::kSpecularMaterials:
-        if (std::any_of(scene.materials.begin(), scene.materials.end(),
-                        [](const scene::Material& m) { return scene::isIdealSpecular(m.type); }))
-          continue;
+        if (scene.hasIdealSpecular()) continue;
         return fmt::format(
             "technique '{}' renders ideal mirrors or glass and scene '{}' has no such material; "
             "give it a scene with one",

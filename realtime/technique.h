@@ -105,10 +105,12 @@ class Technique {
 // technique is made, and refuses a job whose scene or caller lacks one with a line naming it; a
 // suite runs a technique only on the scenes that have what it needs.
 enum class TechniqueNeed {
-  kRayCaster,          // the harness's CPU ray caster (TechniqueServices::ray_caster)
-  kMedium,             // a participating medium (the scene's particles)
-  kSpecularMaterials,  // a material that reflects or refracts ideally (scene::isIdealSpecular)
-  kEnvironmentLight,   // light arriving from beyond the scene (a sky)
+  kRayCaster,  // the harness's CPU ray caster (TechniqueServices::ray_caster)
+  kMedium,     // a participating medium (the scene's particles)
+  // a mesh that reflects or refracts ideally (scene::Scene::hasIdealSpecular); a technique without
+  // it is refused such a scene
+  kSpecularMaterials,
+  kEnvironmentLight,  // light arriving from beyond the scene (a sky)
 };
 
 // "ray caster", "participating medium", …: the need in messages, `gibench list` and the READMEs.
@@ -145,10 +147,12 @@ struct TechniqueInfo {
   bool hasNeed(TechniqueNeed need) const;
 };
 
-// The first need of `info` that the scene lacks (a medium, a sky, a specular material), with a
-// line saying why and what to do; empty when it has all. A suite is checked with it when it loads.
+// The first need of `info` that the scene lacks (a medium, a sky, a specular material), or the
+// mirrors and glass (Scene::hasIdealSpecular) of a scene given to a technique that does not
+// declare kSpecularMaterials, with a line saying why and what to do; empty when the scene suits
+// the technique. A suite is checked with it when it loads.
 std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const scene::Scene& scene);
-// Whether any need of `info` is a feature of the scene (what missingSceneNeed checks).
+// Whether any need of `info` is a feature of the scene (a medium, a sky, specular materials).
 bool needsSceneFeatures(const TechniqueInfo& info);
 // missingSceneNeed, and the services the technique needs (the ray caster): what the runner checks
 // once, before it makes the technique.

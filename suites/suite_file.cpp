@@ -432,15 +432,18 @@ Case readCase(const TomlErrorReporter& errors, const toml::table& table, std::si
 }
 
 // A case that pairs a technique with a scene that lacks what it needs (a medium, a sky) fails when
-// the suite loads, at the case's technique, not when its job runs an hour into the night. Scenes
-// are loaded only for techniques with such needs, once per scene and parameters.
+// the suite loads, at the case's technique, not when its job runs an hour into the night; so does
+// a built-in scene with mirrors or glass (`--scene-set spheres=…`) paired with a technique that
+// does not render them. Scene files are loaded only for techniques with such needs (they may be
+// large; the runner refuses their mirrors and glass when the job starts), and every scene once per
+// technique and parameters.
 void checkSceneNeeds(const TomlErrorReporter& errors, const std::vector<const toml::table*>& cases,
                      const Suite& suite, const std::vector<Job>& jobs) {
   std::set<std::string> checked;
   for (const Job& job : jobs) {
     if (job.isReference()) continue;
     const rt::TechniqueInfo& info = rt::findTechnique(job.technique);
-    if (!needsSceneFeatures(info)) continue;
+    if (!needsSceneFeatures(info) && !job.scene.builtin()) continue;
     const std::vector<std::string> parameters = assignmentStrings(job.scene_parameters);
     std::string key = job.technique + '\n' + job.scene.nameOrPath();
     for (const std::string& p : parameters) key += '\n' + p;

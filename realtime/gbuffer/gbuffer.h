@@ -44,8 +44,9 @@ class GBuffer {
 
   // RGBA32F textures; background pixels have distance (w of position) and material = −1.
   const gl::Texture& position() const { return position_; }  // world position, w: ray distance
-  const gl::Texture& normal() const { return normal_; }      // unit geometric normal, w: material
-  const gl::Texture& albedo() const { return albedo_; }      // material diffuse RGB, w: 1
+  // Unit shading normal (the geometric one on a flat mesh, shading_normal.glsl), w: material.
+  const gl::Texture& normal() const { return normal_; }
+  const gl::Texture& albedo() const { return albedo_; }  // material diffuse RGB, w: 1
   // Binds position and normal, what deferred passes read (gbuffer_maps.glsl), to their units of
   // gl/binding_plan_shared.h.
   void bindTextures() const;

@@ -15,6 +15,7 @@ layout(std140, binding = kGBufferViewsBinding) uniform GBufferViewBlock {
 #ifndef VIEWPORT_FROM_VERTEX_SHADER
 #define world_position g_world_position
 #define world_normal g_world_normal
+#define world_shading_normal g_world_shading_normal
 #define material g_material
 #define view_eye g_view_eye
 flat out int g_viewport;
@@ -24,11 +25,13 @@ flat out vec3 view_eye;
 
 out vec3 world_position;
 flat out vec3 world_normal;
+out vec3 world_shading_normal;  // zero on a flat mesh (shading_normal.glsl)
 flat out uint material;
 
 void main() {
   world_position = vertex_position;
   world_normal = vertex_normal;
+  world_shading_normal = vertex_shading_normal;
   material = vertex_material;
 #ifdef EXPLICIT_VIEW
   int view = int(vertex_instance);

@@ -4,11 +4,13 @@ layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 in vec3 g_world_position[];
 flat in vec3 g_world_normal[];
+in vec3 g_world_shading_normal[];
 flat in uint g_material[];
 flat in vec3 g_view_eye[];
 flat in int g_viewport[];
 out vec3 world_position;
 flat out vec3 world_normal;
+out vec3 world_shading_normal;
 flat out uint material;
 flat out vec3 view_eye;
 
@@ -18,6 +20,7 @@ void main() {
     gl_Position = gl_in[i].gl_Position;
     world_position = g_world_position[i];
     world_normal = g_world_normal[i];
+    world_shading_normal = g_world_shading_normal[i];
     material = g_material[i];
     view_eye = g_view_eye[i];
     EmitVertex();

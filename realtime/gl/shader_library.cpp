@@ -16,7 +16,7 @@ std::string_view glslFile(std::string_view path) {
   if (const EmbeddedFile* file = findEmbeddedFile(embeddedShaderFiles(), path)) return file->text;
   throw ShaderError(fmt::format(
       "no embedded shader file '{}' (a path from the project root, of a *.glsl file under "
-      "realtime/ or a *_shared.h header under realtime/ or common/)",
+      "realtime/ or a *_shared.h header under realtime/, common/ or scene/)",
       path));
 }
 

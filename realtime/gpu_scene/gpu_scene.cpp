@@ -19,7 +19,8 @@ namespace gib::rt {
 namespace {
 
 // The vertex attributes of gpu_scene_shared.h: flat triangles, so every vertex carries its
-// triangle's normal and material.
+// triangle's normal and material. Shading normals, which most scenes lack, live in a buffer of
+// their own (GpuScene::GpuScene).
 struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
@@ -77,14 +78,43 @@ std::vector<Vertex> flatVertices(const scene::Scene& scene) {
   return vertices;
 }
 
+// kVertexShadingNormalLocation's values, in flatVertices' order: each vertex's normal on a mesh
+// that has them, zero on a flat one; empty when no mesh has them.
+std::vector<glm::vec3> shadingNormals(const scene::Scene& scene) {
+  if (std::none_of(scene.meshes.begin(), scene.meshes.end(),
+                   [](const scene::Mesh& mesh) { return !mesh.normals.empty(); }))
+    return {};
+  std::vector<glm::vec3> normals;
+  normals.reserve(3 * scene.triangleCount());
+  for (const scene::Mesh& mesh : scene.meshes)
+    for (const glm::uvec3& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k)
+        normals.push_back(mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[t[k]]);
+  return normals;
+}
+
+int gpuMaterialType(scene::MaterialType type) {
+  switch (type) {
+    case scene::MaterialType::kLambert:
+      return gpu::kMaterialLambert;
+    case scene::MaterialType::kPhong:
+      return gpu::kMaterialPhong;
+    case scene::MaterialType::kMirror:
+      return gpu::kMaterialMirror;
+    case scene::MaterialType::kGlass:
+      return gpu::kMaterialGlass;
+  }
+  return gpu::kMaterialLambert;
+}
+
 std::vector<gpu::Material> gpuMaterials(const scene::Scene& scene) {
   std::vector<gpu::Material> materials;
-  for (const scene::Material& m : scene.materials) {
-    const float type =
-        float(m.type == scene::MaterialType::kPhong ? gpu::kMaterialPhong : gpu::kMaterialLambert);
-    materials.push_back({glm::vec4(m.diffuse, type), glm::vec4(m.specular, m.exponent),
-                         glm::vec4(m.emission, 0.0f)});
-  }
+  materials.reserve(scene.materials.size());
+  for (const scene::Material& m : scene.materials)
+    materials.push_back({glm::vec4(m.diffuse, float(gpuMaterialType(m.type))),
+                         glm::vec4(m.specular, m.exponent), glm::vec4(m.emission, 0.0f),
+                         glm::vec4(m.conductor_n, m.perfect_mirror ? 1.0f : 0.0f),
+                         glm::vec4(m.conductor_k, 0.0f), glm::vec4(m.absorption, m.ior)});
   return materials;
 }
 
@@ -183,6 +213,18 @@ GpuScene::GpuScene(const scene::Scene& scene, int width, int height)
   const gpu::Camera block = cameraBlock(camera_, width, height);
   camera_block_ = gl::Buffer(sizeof(block), &block, 0);
   setSceneVertexAttributes<Vertex>(vertex_array_, vertices_);
+  // Shading normals come from a second buffer, and only for a scene that has some: a flat scene
+  // draws from the same vertex buffer as before they existed, and its disabled attribute reads
+  // zero (GL's default current value), which shaders take as flat (shading_normal.glsl).
+  const GLuint vao = vertex_array_.id();
+  const std::vector<glm::vec3> shading_normals = shadingNormals(scene);
+  if (!shading_normals.empty()) {
+    shading_normals_ = gl::Buffer::fromVector(shading_normals, 0);
+    glVertexArrayVertexBuffer(vao, 2, shading_normals_.id(), 0, sizeof(glm::vec3));
+    glVertexArrayAttribFormat(vao, gpu::kVertexShadingNormalLocation, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, gpu::kVertexShadingNormalLocation, 2);
+    glEnableVertexArrayAttrib(vao, gpu::kVertexShadingNormalLocation);
+  }
 
   std::vector<glm::vec3> positions;
   positions.reserve(vertices.size());
@@ -193,7 +235,6 @@ GpuScene::GpuScene(const scene::Scene& scene, int width, int height)
   std::vector<GLuint> indices(gpu::kMaxVertexInstances);
   for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = GLuint(i);
   instance_indices_ = gl::Buffer::fromVector(indices, 0);
-  const GLuint vao = vertex_array_.id();
   glVertexArrayVertexBuffer(vao, 1, instance_indices_.id(), 0, sizeof(GLuint));
   glVertexArrayBindingDivisor(vao, 1, 1);
   glVertexArrayAttribIFormat(vao, gpu::kVertexInstanceLocation, 1, GL_UNSIGNED_INT, 0);

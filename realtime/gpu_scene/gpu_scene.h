@@ -1,6 +1,7 @@
-// The scene model on the GPU, uploaded once: flat-shaded triangles (positions, geometric normals,
-// material index per vertex), the materials as a shader storage buffer, the camera as a uniform
-// buffer, and the light lists on the CPU side for techniques that place shadow maps or samples.
+// The scene model on the GPU, uploaded once: triangles (positions, geometric normals, material
+// index per vertex, and the meshes' shading normals where a scene has them), the materials as a
+// buffer texture, the camera as a uniform buffer, and the light lists on the CPU side for
+// techniques that place shadow maps or samples.
 // The layouts the shaders read (materials, camera block, vertex attributes) are declared once in
 // gpu_scene_shared.h; scene.glsl and vertex.glsl are the GLSL side.
 #pragma once
@@ -99,7 +100,7 @@ class GpuScene {
   std::vector<EmitterTriangle> emitters_;
   std::size_t vertex_count_ = 0;
   std::vector<TriangleChunk> chunks_;
-  gl::Buffer vertices_, instance_indices_, materials_, camera_block_;
+  gl::Buffer vertices_, shading_normals_, instance_indices_, materials_, camera_block_;
   gl::Texture material_texels_;  // materials_ as the buffer texture shaders read
   gl::VertexArray vertex_array_;
 };

@@ -88,10 +88,8 @@ TEST(TechniqueNeeds, EachNeedIsCheckedAgainstTheSceneOrTheServices) {
   const TechniqueInfo sky = infoNeeding({TechniqueNeed::kEnvironmentLight});
   EXPECT_FALSE(missingSceneNeed(sky, cloud));
   EXPECT_THAT(missingSceneNeed(sky, cloud_without_sky).value_or(""), HasSubstr("has no sky"));
-  // No built-in scene has an ideal mirror or glass yet.
-  EXPECT_THAT(
-      missingSceneNeed(infoNeeding({TechniqueNeed::kSpecularMaterials}), cornell).value_or(""),
-      HasSubstr("no such material"));
+  const TechniqueInfo specular = infoNeeding({TechniqueNeed::kSpecularMaterials});
+  EXPECT_THAT(missingSceneNeed(specular, cornell).value_or(""), HasSubstr("no such material"));
 
   const TechniqueInfo rays = infoNeeding({TechniqueNeed::kRayCaster});
   EXPECT_FALSE(missingSceneNeed(rays, cornell)) << "the ray caster is not the scene's";
@@ -103,6 +101,34 @@ TEST(TechniqueNeeds, EachNeedIsCheckedAgainstTheSceneOrTheServices) {
     return nullptr;
   };
   EXPECT_FALSE(missingNeed(rays, cornell, lent));
+}
+
+// A scene with a mirror or glass on a mesh (Scene::hasIdealSpecular) is refused to every technique
+// that does not declare kSpecularMaterials, and given to one that does; a specular material no
+// mesh uses changes nothing.
+TEST(TechniqueNeeds, OnlyTechniquesThatRenderMirrorsOrGlassAcceptThem) {
+  for (const scene::MaterialType type :
+       {scene::MaterialType::kMirror, scene::MaterialType::kGlass}) {
+    scene::Scene s = scene::loadScene("cornell");
+    scene::Material specular;
+    specular.name = "specular";
+    specular.type = type;
+    specular.perfect_mirror = true;
+    s.materials.push_back(specular);
+    const TechniqueInfo plain = infoNeeding({});
+    const TechniqueInfo renders_specular = infoNeeding({TechniqueNeed::kSpecularMaterials});
+    EXPECT_FALSE(missingSceneNeed(plain, s)) << "no mesh is specular yet";
+    s.meshes.front().material = std::uint32_t(s.materials.size() - 1);
+    ASSERT_TRUE(s.hasIdealSpecular());
+    EXPECT_THAT(missingSceneNeed(plain, s).value_or(""),
+                HasSubstr("does not render ideal mirrors or glass and scene 'cornell' has them"));
+    EXPECT_FALSE(missingSceneNeed(renders_specular, s));
+    for (const TechniqueInfo& info : techniqueCatalogue()) {
+      if (!info.hasNeed(TechniqueNeed::kSpecularMaterials)) {
+        EXPECT_TRUE(missingSceneNeed(info, s)) << info.name;
+      }
+    }
+  }
 }
 
 // A technique that draws nothing and reports what it is told to: the runner must refuse an image
