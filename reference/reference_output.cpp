@@ -33,6 +33,8 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
   m["gibench/sampler"] = samplerName(s.sampler);
   m["gibench/replicas"] = std::to_string(replicasOf(s));
   m["gibench/pixel_sampling"] = pixelSamplingName(s.pixel_sampling);
+  // Whether light paths joined the camera paths (docs/rendering.md, "Caustics: light tracing").
+  m["gibench/light_paths"] = tracesLightPaths(scene, s.light_paths) ? "traced" : "none";
   m["gibench/embree_version"] = embreeVersion();
   m["gibench/layers"] =
       "RGB: mean radiance (linear Rec.709); variance: variance of the per-pixel mean, from the "
