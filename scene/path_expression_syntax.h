@@ -1,7 +1,8 @@
 // The syntax of path expressions (scene/path_expression.h): the parser from text to a tree, with
 // errors that point at a column, and the recognition of a tree that is a bounce range, which
-// PathExpression runs with a counter instead of a table. Internal to scene/path_expression.cpp
-// and scene/path_automaton.cpp.
+// PathExpression runs with a counter instead of a table. Used by PathExpression's implementation
+// (scene/path_expression.cpp, scene/path_automaton.cpp); its header includes this one only for the
+// BounceRange it holds.
 #pragma once
 
 #include "scene/path_event.h"

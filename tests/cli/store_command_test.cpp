@@ -42,7 +42,7 @@ TEST(StoreCommand, ListShowsEveryEntryAndTheTotal) {
   EXPECT_THAT(r.out, HasSubstr(shortKey(store.cornell)));
   EXPECT_THAT(r.out, HasSubstr(shortKey(store.furnace)));
   EXPECT_THAT(r.out, HasSubstr("24x24"));
-  EXPECT_THAT(r.out, HasSubstr("L(D|S)*E"));
+  EXPECT_THAT(r.out, HasSubstr("L(D|S|P)*E"));
   EXPECT_THAT(r.out, HasSubstr("2 entries"));
   // Only the furnace entry's line is stale.
   std::string furnace_line = r.out.substr(r.out.find(shortKey(store.furnace)));
