@@ -7,7 +7,7 @@
 #
 #   scripts/cross-check-cycles.sh SCENE [--scene-set key=value ...] [--width W] [--height H]
 #                                 [--spp N] [--seed S] [--truth-spp N] [--replicas K] [--out DIR]
-#                                 [--cycles-no-light-sampling] [--own-truth]
+#                                 [--cycles-no-light-sampling] [--own-truth] [--light-paths MODE]
 #
 # The truth is a Cycles render when the scene maps exactly onto Cycles; when it does not (the
 # exporter's warnings say what differs: Phong lobes, a spot fall-off, a medium, the caustics of a
@@ -16,7 +16,9 @@
 # --own-truth measures each renderer against a long render of its own for an exact scene too:
 # its MSE is then its noise alone, without the small systematic difference between the renderers
 # (which the means and the worst block show). --replicas K is passed to `gibench render` (its
-# default: 4 replicas, the error bars' cost).
+# default: 4 replicas, the error bars' cost), and so is --light-paths auto|off (its default: auto,
+# light tracing of the caustics' paths where the scene has mirrors or glass; off: camera paths
+# only, a path tracer as Cycles is).
 #
 # --cycles-no-light-sampling renders both Cycles images with emissive meshes left to BSDF
 # sampling: noisier, but free of the slight darkening of Cycles' light sampling at grazing angles
@@ -38,7 +40,7 @@ fail() {
 
 usage="usage: scripts/cross-check-cycles.sh SCENE [--scene-set key=value ...] [--width W]"
 usage+=" [--height H] [--spp N] [--seed S] [--truth-spp N] [--replicas K] [--out DIR]"
-usage+=" [--cycles-no-light-sampling] [--own-truth]"
+usage+=" [--cycles-no-light-sampling] [--own-truth] [--light-paths MODE]"
 scene=""
 scene_set=()
 width=256
@@ -50,6 +52,7 @@ replicas=0
 out=""
 own_truth=0
 cycles_options=()
+gibench_options=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --cycles-no-light-sampling)
@@ -60,7 +63,8 @@ while [ $# -gt 0 ]; do
       own_truth=1
       shift
       ;;
-    --scene-set | --width | --height | --spp | --seed | --truth-spp | --replicas | --out)
+    --scene-set | --width | --height | --spp | --seed | --truth-spp | --replicas | --out | \
+      --light-paths)
       [ $# -ge 2 ] || fail "$1 needs a value; $usage"
       case "$1" in
         --scene-set) scene_set+=(--scene-set "$2") ;;
@@ -71,6 +75,7 @@ while [ $# -gt 0 ]; do
         --truth-spp) truth_spp="$2" ;;
         --replicas) replicas="$2" ;;
         --out) out="$2" ;;
+        --light-paths) gibench_options+=(--light-paths "$2") ;;
       esac
       shift 2
       ;;
@@ -140,11 +145,14 @@ since() { python3 -c "import sys; print(f'{float(sys.argv[2]) - float(sys.argv[1
 #    fallback.
 start="$(now)"
 step "$out/gibench.log" "$gibench" render --scene "$scene" "${scene_set[@]}" --width "$width" \
-  --height "$height" --spp "$spp" --seed "$seed" --replicas "$replicas" --out "$out/gibench.exr"
+  --height "$height" --spp "$spp" --seed "$seed" --replicas "$replicas" "${gibench_options[@]}" \
+  --out "$out/gibench.exr"
 gibench_wall="$(since "$start")"
 metadata() { oiiotool --info -v "$out/gibench.exr" 2>/dev/null | sed -n "s|^ *gibench/$1: \"\(.*\)\"$|\1|p" || true; }
 gibench_seconds="$(metadata render_seconds)"
 gibench_sampler="$(metadata sampler), $(metadata replicas) replicas"
+light_paths="$(metadata light_paths)"
+[ -z "$light_paths" ] || gibench_sampler+=", light paths $light_paths"
 gibench_clock="its reported render time"
 if [ -z "$gibench_seconds" ]; then
   gibench_seconds="$gibench_wall"
@@ -192,7 +200,7 @@ if [ "$truth_spp" -gt 0 ]; then
     gibench_truth="$out/gibench-truth.exr"
     step "$out/gibench-truth.log" "$gibench" render --scene "$scene" "${scene_set[@]}" \
       --width "$width" --height "$height" --spp "$truth_spp" --seed "$((seed + 1))" \
-      --replicas 1 --out "$gibench_truth"
+      --replicas 1 "${gibench_options[@]}" --out "$gibench_truth"
   fi
   step "$out/gibench-truth.json" "$gibench" compare "$gibench_truth" "$out/gibench.exr" \
     --metrics mse --json

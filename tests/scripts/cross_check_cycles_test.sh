@@ -65,7 +65,7 @@ GIBENCH="$gibench" "$script" chamber --width 32 --height 24 --spp 4 --truth-spp 
   fail "the chamber's cross-check exited with $?: $(cat "$work/chamber.err")"
 cat "$work/chamber.txt"
 grep -q "is not mapped exactly: Phong material" "$work/chamber.err" || fail "no Phong warning"
-grep -q "(sobol, 2 replicas)" "$work/chamber.txt" || fail "--replicas 2 not passed to gibench"
+grep -q "(sobol, 2 replicas, light paths none)" "$work/chamber.txt" || fail "--replicas 2 not passed to gibench"
 grep -q "truth: each renderer's own, 16 spp" "$work/chamber.txt" || fail "not each one's own truth"
 [ -f "$work/chamber/gibench-truth.exr" ] || fail "no GI Bench truth rendered for the chamber"
 
@@ -83,6 +83,7 @@ cat "$work/spheres.txt"
 grep -q "Every part of the scene maps exactly" "$work/spheres/scene.py" ||
   fail "the spheres box does not map exactly: $(cat "$work/spheres.err")"
 grep -q "mirror.distribution = \"SHARP\"" "$work/spheres/scene.py" || fail "no sharp mirror"
+grep -q "light paths traced" "$work/spheres.txt" || fail "GI Bench traced no light paths"
 for channel in R G B; do
   difference=$(sed -n "s/^mean $channel .* \([-+][0-9.]*\)%$/\1/p" "$work/spheres.txt")
   awk -v d="$difference" -v t="$spheres_tolerance_percent" 'BEGIN { exit !(d <= t && d >= -t) }' ||
@@ -95,6 +96,12 @@ GIBENCH="$gibench" "$script" cornell --scene-set blocks=false --width 32 --heigh
   fail "the cross-check with --own-truth exited with $?: $(cat "$work/own.err")"
 grep -q "truth: each renderer's own, 16 spp" "$work/own.txt" || fail "--own-truth not applied"
 [ -f "$work/own/gibench-truth.exr" ] || fail "no GI Bench truth rendered with --own-truth"
+
+# --light-paths is passed to gibench: off leaves the spheres box to camera paths alone.
+GIBENCH="$gibench" "$script" cornell --scene-set spheres=glass --width 16 --height 16 --spp 4 \
+  --light-paths off --out "$work/off" >"$work/off.txt" 2>"$work/off.err" ||
+  fail "the cross-check with --light-paths off exited with $?: $(cat "$work/off.err")"
+grep -q "light paths none" "$work/off.txt" || fail "--light-paths off not passed to gibench"
 
 # Bad input: one line naming the problem, exit code 2, no directory left behind.
 expect_refusal() {
@@ -113,6 +120,8 @@ expect_refusal "unknown scene 'cornel'" env GIBENCH="$gibench" "$script" cornel 
 expect_refusal "no Blender" env GIBENCH="$gibench" BLENDER=/nonexistent/blender "$script" cornell
 expect_refusal "no gibench" env GIBENCH=/nonexistent/gibench "$script" cornell
 expect_refusal "--spp 'x'" env GIBENCH="$gibench" "$script" cornell --spp x
+expect_refusal "unknown light-paths mode 'of'" env GIBENCH="$gibench" "$script" cornell \
+  --light-paths of --width 8 --height 8 --spp 4
 expect_refusal "--replicas 3 does not divide --spp 4" env GIBENCH="$gibench" "$script" cornell \
   --spp 4 --replicas 3 --width 8 --height 8
 [ "$(leftovers)" -eq "$before" ] ||
