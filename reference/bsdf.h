@@ -36,6 +36,8 @@ class Bsdf {
   // triangle, which for glass is the outside.
   Bsdf(const scene::Material& material, const glm::vec3& geometric, const glm::vec3& shading,
        const glm::vec3& wo, bool outside);
+  // A Bsdf refers to its material, which must outlive it: not a temporary.
+  Bsdf(scene::Material&&, const glm::vec3&, const glm::vec3&, const glm::vec3&, bool) = delete;
 
   bool isSpecular() const { return specular_; }
 

@@ -64,9 +64,10 @@ TEST(GlassBsdf, ChoosesReflectionAndRefractionWithTheirFresnelProbabilities) {
 
 TEST(GlassBsdf, DirectionsFollowReflectionAndSnellsLaw) {
   const glm::vec3 n(0, 0, 1);
+  const scene::Material m = glass(1.5f);  // a Bsdf refers to its material: it must outlive it
   for (bool outside : {true, false}) {
     const float eta = outside ? 1.5f : 1.0f / 1.5f;
-    const Bsdf bsdf(glass(1.5f), n, n, direction(0.8f), outside);
+    const Bsdf bsdf(m, n, n, direction(0.8f), outside);
     const glm::vec3 wo = direction(0.8f);
     for (float u : {0.0f, 0.99f}) {
       const BsdfSample s = bsdf.sample({u, 0.5f});
