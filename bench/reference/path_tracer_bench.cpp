@@ -9,13 +9,11 @@
 #include "reference/triangle_table.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
+#include "support/reference_measures.h"
 
 #include <benchmark/benchmark.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
-#include <atomic>
 #include <vector>
 
 namespace {
@@ -105,14 +103,10 @@ void BM_ComparePrimarySurfaces512(benchmark::State& state) {
 }
 BENCHMARK(BM_ComparePrimarySurfaces512)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-struct Ray {
-  glm::vec3 origin, direction;
-};
-
 // Camera rays at 512×512 plus, per pixel, one cosine-distributed ray from a random point on the
 // box's surfaces: the mix of coherent and incoherent rays a path tracer issues.
-std::vector<Ray> makeRays(const scene::Scene& scene, float epsilon) {
-  std::vector<Ray> rays;
+std::vector<scene::Ray> makeRays(const scene::Scene& scene, float epsilon) {
+  std::vector<scene::Ray> rays;
   const scene::CameraFrame camera = scene::makeCameraFrame(scene.camera, kSize, kSize);
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x)
@@ -137,19 +131,7 @@ std::vector<Ray> makeRays(const scene::Scene& scene, float epsilon) {
 void BM_BareEmbreeIntersectCornell(benchmark::State& state) {
   const scene::Scene cornell = scene::loadScene("cornell");
   const ref::EmbreeScene embree(cornell);
-  const std::vector<Ray> rays = makeRays(cornell, embree.rayEpsilon());
-  for (auto _ : state) {
-    std::atomic<std::uint32_t> hits{0};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 4096), [&](auto range) {
-      std::uint32_t local = 0;
-      for (std::size_t i = range.begin(); i != range.end(); ++i)
-        local += embree.intersect(rays[i].origin, rays[i].direction).valid();
-      hits += local;
-    });
-    benchmark::DoNotOptimize(hits.load());
-  }
-  state.counters["rays/s"] = benchmark::Counter(double(state.iterations()) * double(rays.size()),
-                                                benchmark::Counter::kIsRate);
+  bench::measureBareEmbree(state, embree, makeRays(cornell, embree.rayEpsilon()));
 }
 BENCHMARK(BM_BareEmbreeIntersectCornell)->Unit(benchmark::kMillisecond)->UseRealTime();
 

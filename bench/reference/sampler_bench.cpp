@@ -2,16 +2,13 @@
 // run (docs/rendering.md, "Sampling"): the cost of one 2D point, and per built-in scene the
 // render's efficiency 1/(MSE · seconds) at equal spp against a long render, and the time an
 // image needs to reach relMSE 1e-3 (fitted over its checkpoints, extrapolated).
-#include "metrics/convergence_fit.h"
-#include "metrics/image_metrics.h"
 #include "reference/path_sampler.h"
 #include "reference/progressive_renderer.h"
 #include "scene/builtin_scenes.h"
+#include "support/reference_measures.h"
 
 #include <benchmark/benchmark.h>
 
-#include <chrono>
-#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -74,32 +71,7 @@ void BM_ReferenceEfficiency(benchmark::State& state, const char* scene_name) {
   settings.spp = kSpp;
   settings.sampler = ref::SamplerKind(state.range(0));
   settings.replicas = std::uint32_t(state.range(1));
-  double mse = 0, seconds = 0;
-  std::vector<double> log_spp, log_relmse;
-  for (auto _ : state) {
-    log_spp.clear();
-    log_relmse.clear();
-    const auto start = std::chrono::steady_clock::now();
-    const ref::RenderResult r =
-        ref::renderReference(scene, settings, [&](std::uint32_t spp, const image::Image& mean) {
-          if (spp < 8) return;  // before the asymptotic rate
-          log_spp.push_back(std::log(double(spp)));
-          log_relmse.push_back(std::log(metrics::computeRelMse(truth, mean).value));
-        });
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    mse += metrics::computeMse(truth, r.mean).value;
-    settings.seed += 1;  // independent noise in each iteration
-  }
-  const double n = double(state.iterations());
-  mse /= n;
-  seconds /= n;
-  state.counters["mse"] = mse;
-  state.counters["efficiency"] = 1.0 / (mse * seconds);
-  // relMSE = a·spp^slope: the spp, and so the time, at which it reaches 1e-3.
-  const metrics::LinearFit fit = metrics::fitLine(log_spp, log_relmse);
-  const double spp_needed = std::exp((std::log(1e-3) - fit.intercept) / fit.slope);
-  state.counters["relmse_slope"] = fit.slope;
-  state.counters["s_to_relmse_1e-3"] = spp_needed * seconds / double(kSpp);
+  bench::measureEfficiency(state, scene, settings, truth);
   state.SetLabel(
       std::string(settings.sampler == ref::SamplerKind::kSobol ? "sobol" : "independent") +
       ", replicas " + std::to_string(ref::replicasOf(settings)));

@@ -3,22 +3,16 @@
 // on the same box, and what the light paths buy: each image's efficiency 1/(MSE · seconds) against
 // a long render, for the whole image and for its caustics alone (the class L S+ D E), and the time
 // to relMSE 1e-3 (fitted over the checkpoints, extrapolated).
-#include "metrics/convergence_fit.h"
-#include "metrics/image_metrics.h"
 #include "reference/embree_scene.h"
 #include "reference/progressive_renderer.h"
 #include "reference/rng.h"
 #include "reference/sampling.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
+#include "support/reference_measures.h"
 
 #include <benchmark/benchmark.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
-#include <atomic>
-#include <chrono>
-#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -76,18 +70,7 @@ void BM_BareEmbreeIntersectSpheres(benchmark::State& state) {
                             .toWorld(ref::sampleUniformHemisphere({random.next(), random.next()}));
     rays.push_back({points[i % points.size()] + 0.5f * d, random.next() < 0.5f ? d : -d});
   }
-  for (auto _ : state) {
-    std::atomic<std::uint32_t> hits{0};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 4096), [&](auto range) {
-      std::uint32_t local = 0;
-      for (std::size_t i = range.begin(); i != range.end(); ++i)
-        local += embree.intersect(rays[i].origin, rays[i].direction).valid();
-      hits += local;
-    });
-    benchmark::DoNotOptimize(hits.load());
-  }
-  state.counters["rays/s"] = benchmark::Counter(double(state.iterations()) * double(rays.size()),
-                                                benchmark::Counter::kIsRate);
+  bench::measureBareEmbree(state, embree, rays);
 }
 BENCHMARK(BM_BareEmbreeIntersectSpheres)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -121,31 +104,7 @@ void BM_SpheresEfficiency(benchmark::State& state) {
   settings.spp = kSpp;
   settings.light_paths = ref::LightPaths(state.range(0));
   settings.path_class.expression = paths;
-  double mse = 0, seconds = 0;
-  std::vector<double> log_spp, log_relmse;
-  for (auto _ : state) {
-    log_spp.clear();
-    log_relmse.clear();
-    const auto start = std::chrono::steady_clock::now();
-    const ref::RenderResult r =
-        ref::renderReference(scene, settings, [&](std::uint32_t spp, const image::Image& mean) {
-          if (spp < 8) return;
-          log_spp.push_back(std::log(double(spp)));
-          log_relmse.push_back(std::log(metrics::computeRelMse(truth, mean).value));
-        });
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    mse += metrics::computeMse(truth, r.mean).value;
-    settings.seed += 1;
-  }
-  const double n = double(state.iterations());
-  mse /= n;
-  seconds /= n;
-  state.counters["mse"] = mse;
-  state.counters["efficiency"] = 1.0 / (mse * seconds);
-  const metrics::LinearFit fit = metrics::fitLine(log_spp, log_relmse);
-  state.counters["relmse_slope"] = fit.slope;
-  state.counters["s_to_relmse_1e-3"] =
-      std::exp((std::log(1e-3) - fit.intercept) / fit.slope) * seconds / double(kSpp);
+  bench::measureEfficiency(state, scene, settings, truth);
   state.SetLabel(std::string(state.range(1) ? "LS+DE" : "all paths") + ", light paths " +
                  ref::lightPathsName(settings.light_paths));
 }
