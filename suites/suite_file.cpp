@@ -440,16 +440,20 @@ Case readCase(const TomlErrorReporter& errors, const toml::table& table, std::si
 void checkSceneNeeds(const TomlErrorReporter& errors, const std::vector<const toml::table*>& cases,
                      const Suite& suite, const std::vector<Job>& jobs) {
   std::set<std::string> checked;
+  std::map<std::string, scene::Scene> scenes;  // each scene loaded once, whatever the techniques
   for (const Job& job : jobs) {
     if (job.isReference()) continue;
     const rt::TechniqueInfo& info = rt::findTechnique(job.technique);
     if (!needsSceneFeatures(info) && !job.scene.builtin()) continue;
     const std::vector<std::string> parameters = assignmentStrings(job.scene_parameters);
-    std::string key = job.technique + '\n' + job.scene.nameOrPath();
-    for (const std::string& p : parameters) key += '\n' + p;
-    if (!checked.insert(key).second) continue;
-    const std::optional<std::string> missing =
-        rt::missingSceneNeed(info, scene::loadScene(job.scene.nameOrPath(), parameters));
+    std::string scene_key = job.scene.nameOrPath();
+    for (const std::string& p : parameters) scene_key += '\n' + p;
+    if (!checked.insert(job.technique + '\n' + scene_key).second) continue;
+    auto loaded = scenes.find(scene_key);
+    if (loaded == scenes.end())
+      loaded =
+          scenes.emplace(scene_key, scene::loadScene(job.scene.nameOrPath(), parameters)).first;
+    const std::optional<std::string> missing = rt::missingSceneNeed(info, loaded->second);
     if (!missing) continue;
     for (std::size_t i = 0; i < suite.cases.size(); ++i)
       if (suite.cases[i].name == job.case_name)
