@@ -7,6 +7,7 @@
 
 #include "scene/scene.h"
 
+#include <glm/exponential.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -19,6 +20,14 @@ using scene::Rgb;
 // is not symmetric (docs/rendering.md, "Shading normals"; "Mirrors and glass": refraction scales
 // radiance by the square of the index ratio but not flux).
 enum class Transport { kRadiance, kImportance };
+
+// Beer–Lambert attenuation over a segment of length t that ends on a surface of `material`:
+// exp(−absorption·t) where the segment ran inside glass (it ends on the back side), 1 elsewhere.
+inline Rgb glassTransmittance(const scene::Material& material, bool ends_on_front, float t) {
+  return material.type == scene::MaterialType::kGlass && !ends_on_front
+             ? glm::exp(-material.absorption * t)
+             : Rgb(1.0f);
+}
 
 struct BsdfSample {
   glm::vec3 wi{0.0f};

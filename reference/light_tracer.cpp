@@ -2,7 +2,6 @@
 
 #include "reference/sampling.h"
 
-#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -203,14 +202,11 @@ std::uint32_t LightTracer::walk(PathSampler& sampler, const LandingVisitor& visi
     const TriangleRecord& tri = triangles[triangles.globalIndex(hit.mesh, hit.triangle)];
     const scene::Material& material = scene_.materials[tri.material];
     const glm::vec3 wo = -direction;
-    const float cos_front = glm::dot(tri.normal, wo);
-    if (material.type == scene::MaterialType::kGlass && cos_front < 0)
-      flux *= glm::exp(-material.absorption * hit.t);
     const glm::vec3 point = origin + hit.t * direction;
-    glm::vec3 normal = cos_front >= 0 ? tri.normal : -tri.normal;
-    glm::vec3 shading = triangles.shadingNormal(tri, point);
-    if (cos_front < 0) shading = -shading;
-    const Bsdf bsdf(material, normal, shading, wo, cos_front >= 0);
+    const TriangleTable::OrientedNormals normals = triangles.orientedNormals(tri, point, wo);
+    flux *= glassTransmittance(material, normals.front, hit.t);
+    glm::vec3 normal = normals.geometric;
+    const Bsdf bsdf(material, normal, normals.shading, wo, normals.front);
     const PathEvent event = bsdf.isSpecular() ? PathEvent::kSpecular : PathEvent::kDiffuse;
     // A path whose first vertex is diffuse is the path tracer's, whatever follows.
     if (vertex == 1 && event == PathEvent::kDiffuse) break;

@@ -1,6 +1,5 @@
 #include "reference/path_tracer.h"
 
-#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -235,15 +234,14 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
         }
         record(state, bounces, throughput * material.emission * weight);
       }
-      // Inside glass (the segment ends on its back side) light is absorbed on the way.
-      if (material.type == scene::MaterialType::kGlass && cos_emitter < 0)
-        throughput *= glm::exp(-material.absorption * hit.t);
       vertex.point = origin + hit.t * direction;
-      vertex.normal = cos_emitter >= 0 ? tri.normal : -tri.normal;
-      vertex.shading_normal = triangles_.shadingNormal(tri, vertex.point);
-      if (cos_emitter < 0) vertex.shading_normal = -vertex.shading_normal;
+      const TriangleTable::OrientedNormals normals =
+          triangles_.orientedNormals(tri, vertex.point, wo);
+      throughput *= glassTransmittance(material, normals.front, hit.t);
+      vertex.normal = normals.geometric;
+      vertex.shading_normal = normals.shading;
       vertex.epsilon = embree_.rayEpsilon();
-      bsdf.emplace(material, vertex.normal, vertex.shading_normal, wo, cos_emitter >= 0);
+      bsdf.emplace(material, vertex.normal, vertex.shading_normal, wo, normals.front);
       if (bsdf->isBlack()) break;
       vertex.bsdf = &*bsdf;
       event = bsdf->isSpecular() ? PathEvent::kSpecular : PathEvent::kDiffuse;

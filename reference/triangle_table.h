@@ -4,6 +4,8 @@
 
 #include "scene/scene.h"
 
+#include <glm/geometric.hpp>
+
 #include <cstdint>
 #include <vector>
 
@@ -39,6 +41,20 @@ class TriangleTable {
   // the geometric normal for a flat triangle, or where the interpolation degenerates or leaves the
   // front hemisphere (a vertex normal pointing backwards would turn the surface inside out).
   glm::vec3 shadingNormal(const TriangleRecord& triangle, const glm::vec3& point) const;
+
+  // A hit's normals turned towards `wo` (reflection is two-sided), and whether wo lies on the
+  // front side (for glass, the outside).
+  struct OrientedNormals {
+    glm::vec3 geometric;
+    glm::vec3 shading;
+    bool front;
+  };
+  OrientedNormals orientedNormals(const TriangleRecord& triangle, const glm::vec3& point,
+                                  const glm::vec3& wo) const {
+    const bool front = glm::dot(triangle.normal, wo) >= 0;
+    const glm::vec3 shading = shadingNormal(triangle, point);
+    return {front ? triangle.normal : -triangle.normal, front ? shading : -shading, front};
+  }
 
  private:
   std::vector<std::uint32_t> mesh_offsets_;
