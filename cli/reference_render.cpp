@@ -9,7 +9,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace gib::cli {
 
@@ -28,6 +30,36 @@ scene::PathClass pathClassOf(const RenderOptions& o, const CLI::App& app) {
   return scene::PathClass::ofExpression(scene::PathExpression::parse(o.paths).text());
 }
 
+// The obscurance --obscurance asks for instead of radiance, if any, with its mode and d_max.
+std::optional<scene::ObscuranceDefinition> obscuranceOf(const RenderOptions& o,
+                                                        const CLI::App& app) {
+  const std::vector<std::string> details = givenOptions(app, {"--obscurance-mode", "--d-max"});
+  if (givenOptions(app, {"--obscurance"}).empty()) {
+    if (!details.empty())
+      throw InputError(fmt::format(
+          "{} applies to an obscurance; add --obscurance sqrt|ambient_occlusion, or remove it",
+          joinNames(details, " and ")));
+    return std::nullopt;
+  }
+  const std::vector<std::string> radiance_only =
+      givenOptions(app, {"--paths", "--min-bounces", "--max-bounces", "--light-paths"});
+  if (!radiance_only.empty())
+    throw InputError(
+        fmt::format("an obscurance has no light paths for {} to choose; remove it or --obscurance",
+                    joinNames(radiance_only, ", ")));
+  scene::ObscuranceDefinition definition;
+  definition.falloff = scene::parseObscuranceFalloff(o.obscurance);
+  definition.mode = scene::parseObscuranceMode(o.obscurance_mode);
+  if (!(std::isfinite(o.d_max) && o.d_max > 0))
+    throw InputError(
+        fmt::format("--d-max {} is not a positive number; give d_max as a fraction of the scene's "
+                    "bounding-box diagonal (default {})",
+                    o.d_max, scene::ObscuranceDefinition::kDefaultObscuranceDistanceFraction));
+  definition.d_max_fraction = float(o.d_max);
+  scene::validateObscuranceDistanceFraction(definition.d_max_fraction);
+  return definition;
+}
+
 }  // namespace
 
 int renderReference(const RenderOptions& o, const CLI::App& app) {
@@ -37,11 +69,12 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   if (!foreign.empty())
     throw InputError(fmt::format(
         "{} applies to real-time techniques, not the reference; the reference takes --spp, "
-        "--seed, --paths, --min-bounces, --max-bounces",
+        "--seed, --paths, --min-bounces, --max-bounces, --obscurance",
         joinNames(foreign, ", ")));
   if (o.spp <= 0)
     throw InputError(
         fmt::format("--spp {} renders nothing; give at least 1 sample per pixel", o.spp));
+  const std::optional<scene::ObscuranceDefinition> obscurance = obscuranceOf(o, app);
   const scene::PathClass path_class = pathClassOf(o, app);
   const std::filesystem::path out(o.out);
   ref::checkOutputPath(out);
@@ -60,6 +93,7 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   settings.pixel_sampling = ref::parsePixelSampling(o.pixel_sampling);
   settings.light_paths = ref::parseLightPaths(o.light_paths);
   settings.path_class = path_class;
+  settings.obscurance = obscurance;
   settings.threads = o.threads;
   settings.progress = true;
   ref::validateRenderSettings(settings);
@@ -80,6 +114,9 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   fmt::print("rendered   {}x{} at {} spp in {:.2f} s ({:.2f} Mrays/s, peak memory {} MiB)\n",
              settings.width, settings.height, settings.spp, result.seconds,
              result.raysPerSecond() * 1e-6, metadata.at("gibench/peak_rss_mb"));
+  if (obscurance)
+    fmt::print("image      {} (d_max {:g} scene units), not radiance\n",
+               metadata.at("gibench/obscurance"), scene::maxDistance(scene, *obscurance));
   fmt::print("variance   from {} replicas of {} spp ({} degrees of freedom)\n", result.replicas,
              settings.spp / result.replicas, result.variance_dof);
   fmt::print("exr        {}\n", out.string());

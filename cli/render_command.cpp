@@ -76,6 +76,23 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->capture_default_str()
       ->group(kReference);
   render
+      ->add_option("--obscurance", o->obscurance,
+                   "render the obscurance W(x) at each pixel's first hit instead of radiance, "
+                   "with this fall-off: sqrt (rho(d) = sqrt(d/d_max)) or ambient_occlusion (a step "
+                   "at d_max) (docs/rendering.md, \"Obscurances\")")
+      ->group(kReference);
+  render
+      ->add_option("--obscurance-mode", o->obscurance_mode,
+                   "with --obscurance: scalar (grey W in [0, 1]) or spectral (weighted by the "
+                   "albedo seen: colour bleeding)")
+      ->capture_default_str()
+      ->group(kReference);
+  render
+      ->add_option("--d-max", o->d_max,
+                   "with --obscurance: d_max as a fraction of the scene's bounding-box diagonal")
+      ->capture_default_str()
+      ->group(kReference);
+  render
       ->add_flag("--checkpoints", o->checkpoints,
                  "also write the mean at 1, 2, 4, ... spp as <stem>.sppNNNN.exr")
       ->group(kReference);

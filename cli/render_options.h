@@ -2,6 +2,8 @@
 // real-time techniques. Each path rejects the options that belong to the other.
 #pragma once
 
+#include "scene/obscurance.h"
+
 #include <CLI/CLI.hpp>
 
 #include <optional>
@@ -29,6 +31,11 @@ struct RenderOptions {
   std::string paths;  // a path expression (scene/path_expression.h); exclusive with the bounces
   int threads = 0;
   bool checkpoints = false;
+  // An obscurance instead of radiance (scene/obscurance.h): the fall-off's name, empty for
+  // radiance; the mode; d_max as a fraction of the scene's bounding-box diagonal.
+  std::string obscurance;
+  std::string obscurance_mode = "scalar";
+  double d_max = scene::ObscuranceDefinition::kDefaultObscuranceDistanceFraction;
   // Techniques only.
   std::vector<std::string> set;
   int frames = 8;

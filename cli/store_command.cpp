@@ -7,7 +7,6 @@
 #include "reference/reference_store.h"
 #include "reference/reference_store_entry.h"
 #include "results/history_db.h"
-#include "scene/path_class.h"
 #include "suites/store_verification.h"
 
 #include <fmt/format.h>
@@ -117,7 +116,7 @@ int runList(const StoreOptions& o) {
   std::size_t scene_width = 5, class_width = 10;
   for (const ref::StoreEntry& e : entries) {
     scene_width = std::max(scene_width, sceneLabel(e).size());
-    class_width = std::max(class_width, scene::describePathClass(e.spec.path_class).size());
+    class_width = std::max(class_width, ref::describeReferenceQuantity(e.spec).size());
   }
   fmt::print("{:<12}  {:<{}}  {:>9}  {:>6}  {:>6}  {:<{}}  {:<6}  {:>8}  {}\n", "key", "scene",
              scene_width, "size", "spp", "seed", "path class", class_width, "pixels", "MB",
@@ -129,7 +128,7 @@ int runList(const StoreOptions& o) {
     fmt::print("{:<12}  {:<{}}  {:>9}  {:>6}  {:>6}  {:<{}}  {:<6}  {:>8.1f}  {}{}\n",
                shortKey(e.key), sceneLabel(e), scene_width,
                fmt::format("{}x{}", e.spec.width, e.spec.height), e.spec.spp, e.spec.seed,
-               scene::describePathClass(e.spec.path_class), class_width,
+               ref::describeReferenceQuantity(e.spec), class_width,
                ref::pixelSamplingName(e.spec.pixel_sampling), megabytes(e.size_bytes), created,
                e.current ? "" : "  stale");
     any_stale = any_stale || !e.current;

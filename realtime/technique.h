@@ -6,6 +6,7 @@
 #include "common/parameters.h"
 #include "image/image.h"
 #include "realtime/pass_declarations.h"
+#include "scene/obscurance.h"
 #include "scene/path_class.h"
 #include "scene/ray_caster.h"
 
@@ -89,6 +90,13 @@ class Technique {
   // can pick the reference: an iteration that adds a scattering order (the illumination network)
   // overrides it.
   virtual scene::PathClass pathClassAfter(int /*iterations*/) const { return pathClass(); }
+  // What the camera image holds when it is not radiance: an obscurance W(x) per pixel (book
+  // Ch. 10, `obscurances` with output=obscurance). The harness then measures the image against a
+  // reference of that obscurance (ref::RenderSettings::obscurance) instead of the radiance
+  // references of its path class and of all paths.
+  virtual std::optional<scene::ObscuranceDefinition> imageObscurance() const {
+    return std::nullopt;
+  }
 
   // Images of the technique's internal state that a paper shows beside the camera image (a
   // radiance atlas, one bounce's contribution). Called once after the last measured frame with

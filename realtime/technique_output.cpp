@@ -1,6 +1,7 @@
 #include "realtime/technique_output.h"
 
 #include "image/display.h"
+#include "scene/obscurance.h"
 #include "scene/output_metadata.h"
 
 #include <fmt/format.h>
@@ -27,7 +28,13 @@ image::Metadata techniqueOutputMetadata(const scene::Scene& scene, const Techniq
                             settings.height, result.path_class);
   metadata.merge(techniqueRunMetadata(result, settings));
   metadata["gibench/frame_ms_median"] = fmt::format("{:.3f}", frame_ms_median);
-  metadata["gibench/layers"] = "RGB: radiance of the last measured frame (linear Rec.709)";
+  if (result.obscurance) {
+    // What the image is of, instead of radiance (docs/rendering.md, "Obscurances").
+    metadata["gibench/obscurance"] = scene::describeObscurance(*result.obscurance);
+    metadata["gibench/layers"] = "RGB: obscurance W of the last measured frame";
+  } else {
+    metadata["gibench/layers"] = "RGB: radiance of the last measured frame (linear Rec.709)";
+  }
   return metadata;
 }
 

@@ -146,6 +146,7 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
     checkOutputsDeclared(info, result.auxiliary, info.auxiliary_images, "auxiliary image",
                          "auxiliary_images");
     result.path_class = technique->pathClass();
+    result.obscurance = technique->imageObscurance();
     if (settings.capture_primary_surfaces) {
       GBuffer gbuffer(settings.width, settings.height);
       gbuffer.render(*gpu_scene);

@@ -65,6 +65,8 @@ struct TechniqueRunResult {
   int iterations = 0;
   std::optional<PrimarySurfaces> primary;  // when capture_primary_surfaces
   scene::PathClass path_class;
+  // Technique::imageObscurance: set when `image` is an obscurance W, not radiance.
+  std::optional<scene::ObscuranceDefinition> obscurance;
   gl::GlIdentity gl;
 };
 

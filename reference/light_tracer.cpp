@@ -20,25 +20,11 @@ float maxComponent(const Rgb& c) {
   return std::max(c.r, std::max(c.g, c.b));
 }
 
-// A spot's intensity I·cosᵏθ inside its cone (zero behind the light when k > 0, as the path
-// tracer's next-event estimation has it): the cosine of the cone's effective edge.
-float spotEdgeCosine(const scene::SpotLight& spot) {
-  const float edge = std::cos(glm::radians(spot.cone_angle_deg));
-  return spot.falloff_exponent > 0 ? std::max(edge, 0.0f) : edge;
-}
-
-// ∫ cosᵏθ dω over the spot's cone: 2π(1 − μ^(k+1))/(k + 1), μ the edge's cosine.
-float spotSolidAngleIntegral(const scene::SpotLight& spot) {
-  const float k = spot.falloff_exponent;
-  const float edge = spotEdgeCosine(spot);
-  return 2.0f * kPi * (1.0f - std::pow(edge, k + 1.0f)) / (k + 1.0f);
-}
-
 // A direction in the spot's cone with density ∝ cosᵏθ: invert the cumulative
 // (1 − μ^(k+1))/(1 − μ_edge^(k+1)).
 glm::vec3 sampleSpotDirection(const scene::SpotLight& spot, glm::vec2 u) {
   const float k = spot.falloff_exponent;
-  const float edge_power = std::pow(spotEdgeCosine(spot), k + 1.0f);
+  const float edge_power = std::pow(scene::spotEdgeCosine(spot), k + 1.0f);
   const float cos_theta =
       std::clamp(std::pow(1.0f - u.x * (1.0f - edge_power), 1.0f / (k + 1.0f)), -1.0f, 1.0f);
   const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
@@ -85,7 +71,7 @@ LightTracer::LightTracer(const scene::Scene& scene, const PathTracer& tracer, in
   };
   add(area_power_);
   for (const scene::SpotLight& spot : scene.spot_lights)
-    add(spot.intensity * spotSolidAngleIntegral(spot));
+    add(spot.intensity * scene::spotSolidAngleIntegral(spot));
   for (const scene::DirectionalLight& sun : scene.directional_lights)
     add(sun.irradiance * (kPi * scene_radius_ * scene_radius_));
 }
@@ -122,7 +108,7 @@ bool LightTracer::emit(PathSampler& sampler, Emission& e) const {
     e.normal = glm::vec3(0.0f);
     e.direction = sampleSpotDirection(spot, u);
     // Density ∝ I(θ): every particle carries the spot's power.
-    e.flux = spot.intensity * (spotSolidAngleIntegral(spot) / share);
+    e.flux = spot.intensity * (scene::spotSolidAngleIntegral(spot) / share);
     return true;
   }
   const scene::DirectionalLight& sun = scene_.directional_lights[light - 1 - spots];

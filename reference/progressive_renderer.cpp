@@ -4,11 +4,14 @@
 #include "common/parallel_for.h"
 #include "common/progress.h"
 #include "reference/light_tracer.h"
+#include "reference/obscurance_estimator.h"
 #include "scene/camera.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include <glm/geometric.hpp>
 
 #include <fmt/format.h>
 #include <algorithm>
@@ -96,6 +99,29 @@ class CameraBatch {
     return tracer.radiance(rays_[i].origin, rays_[i].direction, samplers_[i], &hits_[i]);
   }
 
+  // The batch's i-th sample of the obscurance at its camera ray's hit (0 for a miss): one ray
+  // about the geometric normal turned towards the camera, from the first vertex's direction
+  // dimensions (the ones a path's first bounce would use). Counted as a bounce-less sample:
+  // all of it is `direct`.
+  RadianceSample obscurance(const ObscuranceEstimator& estimator, std::size_t i) {
+    RadianceSample out;
+    out.rays = 1;
+    const Hit& hit = hits_[i];
+    if (!hit.valid()) return out;
+    const TriangleTable& triangles = estimator.triangles();
+    const TriangleRecord& triangle = triangles[triangles.globalIndex(hit.mesh, hit.triangle)];
+    const glm::vec3& direction = rays_[i].direction;
+    const glm::vec3 normal =
+        glm::dot(triangle.normal, direction) <= 0 ? triangle.normal : -triangle.normal;
+    PathSampler& sampler = samplers_[i];
+    sampler.startVertex(0);
+    out.total = estimator.sample(rays_[i].origin + hit.t * direction, normal,
+                                 sampler.get2D(VertexDimension::kDirection));
+    out.direct = out.total;
+    ++out.rays;
+    return out;
+  }
+
  private:
   std::vector<PathSampler> samplers_;
   std::vector<scene::Ray> rays_;
@@ -122,6 +148,7 @@ void validateRenderSettings(const RenderSettings& s) {
     throw InputError(fmt::format("--min-bounces {} exceeds --max-bounces {}; no path is left",
                                  s.path_class.min_bounces, s.path_class.max_bounces));
   if (s.threads < 0) throw InputError("--threads must be >= 0 (0 uses every core)");
+  if (s.obscurance) scene::validateObscuranceDistanceFraction(s.obscurance->d_max_fraction);
   if (s.replicas > 0 && s.spp % s.replicas != 0)
     throw InputError(fmt::format(
         "--replicas {} does not divide --spp {}; give a divisor of the sample count (or 0 for "
@@ -180,6 +207,10 @@ bool tracesLightPaths(const scene::Scene& scene, LightPaths mode) {
   return mode == LightPaths::kAuto && LightTracer::applies(scene);
 }
 
+bool tracesLightPaths(const scene::Scene& scene, const RenderSettings& settings) {
+  return !settings.obscurance && tracesLightPaths(scene, settings.light_paths);
+}
+
 std::vector<std::uint32_t> passBoundaries(std::uint32_t spp) {
   std::vector<std::uint32_t> ends;
   for (std::uint64_t n = 1; n < spp; n *= 2) ends.push_back(std::uint32_t(n));
@@ -194,8 +225,12 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   const int height = settings.height;
   const auto start = std::chrono::steady_clock::now();
 
-  const bool light_paths = tracesLightPaths(scene, settings.light_paths);
-  PathTracer tracer(scene, settings.path_class, light_paths);
+  const bool light_paths = tracesLightPaths(scene, settings);
+  // An obscurance has no path class: the tracer lends it its BVH and triangles only.
+  PathTracer tracer(scene, settings.obscurance ? PathClass{} : settings.path_class, light_paths);
+  std::optional<ObscuranceEstimator> obscurance;
+  if (settings.obscurance)
+    obscurance.emplace(scene, *settings.obscurance, tracer.embree(), tracer.triangles());
   std::optional<LightTracer> light_tracer;
   if (light_paths) light_tracer.emplace(scene, tracer, width, height);
   const scene::CameraFrame camera = scene::makeCameraFrame(scene.camera, width, height);
@@ -225,7 +260,8 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
               const std::uint32_t batch_end = std::min(end, batch_first + kCameraBatch);
               batch.trace(tracer, camera, settings, replicas, x, y, batch_first, batch_end);
               for (std::uint32_t s = batch_first; s < batch_end; ++s) {
-                const RadianceSample r = batch.radiance(tracer, s - batch_first);
+                const RadianceSample r = obscurance ? batch.obscurance(*obscurance, s - batch_first)
+                                                    : batch.radiance(tracer, s - batch_first);
                 tile_rays += r.rays;
                 double* replica =
                     replicas > 1 ? &replica_sums[(pixel * replicas + s % replicas) * 3] : nullptr;

@@ -5,10 +5,12 @@
 
 #include "image/image.h"
 #include "reference/path_tracer.h"
+#include "scene/obscurance.h"
 #include "scene/scene.h"
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace gib::ref {
@@ -47,6 +49,13 @@ struct RenderSettings {
   PixelSampling pixel_sampling = PixelSampling::kArea;
   PathClass path_class;
   LightPaths light_paths = LightPaths::kAuto;
+  // When set, the image is not radiance but this obscurance W(x) at each camera ray's first hit
+  // (0 where the ray hits nothing), one ray of reference/obscurance_estimator.h per sample about
+  // the geometric normal turned towards the camera: the quantity an obscurances technique's image
+  // holds (docs/rendering.md, "Obscurances"). Replicas, variance, checkpoints and determinism are
+  // as for radiance; light paths are not traced and the path class is ignored; `direct` holds
+  // the mean and `indirect` zero.
+  std::optional<scene::ObscuranceDefinition> obscurance;
   int threads = 0;        // 0: all cores. The image does not depend on it.
   bool progress = false;  // draw a progress bar on a terminal
 };
@@ -98,6 +107,8 @@ const char* lightPathsName(LightPaths mode);
 LightPaths parseLightPaths(const std::string& name);
 // Whether a render of `scene` with `mode` traces light paths.
 bool tracesLightPaths(const scene::Scene& scene, LightPaths mode);
+// Whether a render of `scene` with `settings` does: never for an obscurance.
+bool tracesLightPaths(const scene::Scene& scene, const RenderSettings& settings);
 // "area" or "center", as the command line, suites, metadata and results name them.
 const char* pixelSamplingName(PixelSampling sampling);
 // Throws gib::InputError naming the choices for any other name.

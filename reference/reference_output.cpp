@@ -26,6 +26,7 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
       {"min_bounces", s.path_class.min_bounces},
       {"max_bounces", unlimited ? nlohmann::ordered_json("unlimited")
                                 : nlohmann::ordered_json(s.path_class.max_bounces)}};
+  if (s.obscurance) parameters["obscurance"] = scene::describeObscurance(*s.obscurance);
   image::Metadata m =
       scene::outputMetadata(scene, "reference", parameters.dump(), s.width, s.height, s.path_class);
   m["gibench/spp"] = std::to_string(s.spp);
@@ -34,12 +35,24 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
   m["gibench/replicas"] = std::to_string(replicasOf(s));
   m["gibench/pixel_sampling"] = pixelSamplingName(s.pixel_sampling);
   // Whether light paths joined the camera paths (docs/rendering.md, "Caustics: light tracing").
-  m["gibench/light_paths"] = tracesLightPaths(scene, s.light_paths) ? "traced" : "none";
+  m["gibench/light_paths"] = tracesLightPaths(scene, s) ? "traced" : "none";
   m["gibench/embree_version"] = embreeVersion();
-  m["gibench/layers"] =
-      "RGB: mean radiance (linear Rec.709); variance: variance of the per-pixel mean, from the "
-      "spread of the replicas' means (Student's t with replicas - 1 degrees of freedom); direct: "
-      "paths with at most 1 bounce; indirect: paths with 2 bounces or more";
+  constexpr const char* kVarianceLayer =
+      "variance: variance of the per-pixel mean, from the spread of the replicas' means "
+      "(Student's t with replicas - 1 degrees of freedom)";
+  if (s.obscurance) {
+    // What the image is of, instead of radiance (docs/rendering.md, "Obscurances").
+    m["gibench/obscurance"] = scene::describeObscurance(*s.obscurance);
+    m["gibench/layers"] = fmt::format(
+        "RGB: mean obscurance W at the camera ray's first hit (0 where it hits nothing); {}; "
+        "direct: the same as RGB; indirect: zero",
+        kVarianceLayer);
+  } else {
+    m["gibench/layers"] = fmt::format(
+        "RGB: mean radiance (linear Rec.709); {}; direct: paths with at most 1 bounce; indirect: "
+        "paths with 2 bounces or more",
+        kVarianceLayer);
+  }
   return m;
 }
 

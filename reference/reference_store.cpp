@@ -193,8 +193,19 @@ std::string referenceKey(const scene::Scene& scene, const ReferenceSpec& spec) {
   // Only when not the box filter, so that every key of a box-filtered reference stays valid.
   if (spec.pixel_sampling != PixelSampling::kArea)
     hasher.addString(std::string("pixel_sampling=") + pixelSamplingName(spec.pixel_sampling));
+  // Only for an obscurance, so that every key of a radiance reference stays valid. The fraction
+  // is written in full (fmt's shortest round trip), so two that differ in any bit differ here.
+  if (spec.obscurance)
+    hasher.addString(fmt::format(
+        "obscurance={},{},{}", scene::obscuranceFalloffName(spec.obscurance->falloff),
+        scene::obscuranceModeName(spec.obscurance->mode), spec.obscurance->d_max_fraction));
   hasher.addString(kReferenceRendererVersion);
   return hasher.hexDigest();
+}
+
+std::string describeReferenceQuantity(const ReferenceSpec& spec) {
+  return spec.obscurance ? scene::describeObscurance(*spec.obscurance)
+                         : scene::describePathClass(spec.path_class);
 }
 
 ReferenceStore::ReferenceStore(fs::path root) : root_(std::move(root)) {}

@@ -46,7 +46,15 @@ struct ReferenceSpec {
   // Where the camera rays go (reference/progressive_renderer.h). A pixel-centre reference has a
   // key of its own; a box-filtered one keeps the key it had before the choice existed.
   PixelSampling pixel_sampling = PixelSampling::kArea;
+  // A reference of this obscurance instead of radiance (RenderSettings::obscurance; its path
+  // class is then ignored, and left at every path by the harness). A radiance reference keeps
+  // the key it had before obscurances existed.
+  std::optional<scene::ObscuranceDefinition> obscurance;
 };
+
+// What a stored reference is of, in results and `store list`: its path class in Heckbert's
+// notation, or describeObscurance's words for an obscurance.
+std::string describeReferenceQuantity(const ReferenceSpec& spec);
 
 // Everything entry.json records.
 struct StoreEntry {

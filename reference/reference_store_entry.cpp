@@ -47,6 +47,15 @@ StoreEntry entryFromJson(const ordered_json& j) {
   e.spec.path_class.expression = spec.value("paths", std::string());
   // Recorded since pixel-centre references exist; an entry without it is box-filtered.
   e.spec.pixel_sampling = parsePixelSampling(spec.value("pixel_sampling", std::string("area")));
+  // Recorded for an obscurance reference only; an entry without it is of radiance.
+  if (const auto it = spec.find("obscurance"); it != spec.end()) {
+    scene::ObscuranceDefinition obscurance;
+    obscurance.falloff = scene::parseObscuranceFalloff(it->at("falloff").get<std::string>());
+    obscurance.mode = scene::parseObscuranceMode(it->at("mode").get<std::string>());
+    obscurance.d_max_fraction = it->at("d_max_fraction").get<float>();
+    scene::validateObscuranceDistanceFraction(obscurance.d_max_fraction);
+    e.spec.obscurance = obscurance;
+  }
   e.scene_name = j.at("scene_name").get<std::string>();
   e.scene_hash = j.at("scene_hash").get<std::string>();
   e.renderer_version = j.at("renderer_version").get<std::string>();
@@ -79,6 +88,11 @@ ordered_json entryToJson(const StoreEntry& e) {
                     {"render_seconds", e.render_seconds},
                     {"reference_exr_hash", e.exr_hash}};
   if (!e.spec.path_class.expression.empty()) j["spec"]["paths"] = e.spec.path_class.expression;
+  if (e.spec.obscurance)
+    j["spec"]["obscurance"] = {
+        {"falloff", std::string(scene::obscuranceFalloffName(e.spec.obscurance->falloff))},
+        {"mode", std::string(scene::obscuranceModeName(e.spec.obscurance->mode))},
+        {"d_max_fraction", e.spec.obscurance->d_max_fraction}};
   return j;
 }
 
@@ -124,6 +138,7 @@ RenderSettings renderSettingsOf(const ReferenceSpec& spec, bool progress) {
   settings.seed = spec.seed;
   settings.path_class = spec.path_class;
   settings.pixel_sampling = spec.pixel_sampling;
+  settings.obscurance = spec.obscurance;
   settings.progress = progress;
   return settings;
 }

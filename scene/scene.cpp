@@ -4,9 +4,12 @@
 #include "common/input_error.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace gib::scene {
 
@@ -38,6 +41,17 @@ bool Scene::hasEmissiveTriangles() const {
   for (const Mesh& mesh : meshes)
     if (!mesh.triangles.empty() && materials.at(mesh.material).isEmissive()) return true;
   return false;
+}
+
+float spotEdgeCosine(const SpotLight& spot) {
+  const float edge = std::cos(glm::radians(spot.cone_angle_deg));
+  return spot.falloff_exponent > 0 ? std::max(edge, 0.0f) : edge;
+}
+
+float spotSolidAngleIntegral(const SpotLight& spot) {
+  const float k = spot.falloff_exponent;
+  const float edge = spotEdgeCosine(spot);
+  return 2.0f * std::numbers::pi_v<float> * (1.0f - std::pow(edge, k + 1.0f)) / (k + 1.0f);
 }
 
 namespace {

@@ -90,6 +90,15 @@ struct SpotLight {
   float falloff_exponent = 0.0f;
 };
 
+// The cosine of a spot's effective cone edge: its cone's, or 0 when the cone is wider than a
+// hemisphere and k > 0 (cosᵏθ is taken as zero behind the light, as the path tracer's next-event
+// estimation has it).
+float spotEdgeCosine(const SpotLight& spot);
+// ∫ cosᵏθ dω over the spot's cone, 2π(1 − μ^(k+1))/(k + 1) with μ = spotEdgeCosine: its power
+// is Φ = I·∫cosᵏθ dω. Shared by the light tracer (emission by power) and the obscurances' ambient
+// light (scene/obscurance.h), so both count a spot's power alike.
+float spotSolidAngleIntegral(const SpotLight& spot);
+
 // A light at infinity. `direction` is the direction the light travels (from the light into the
 // scene); `irradiance` is what a surface perpendicular to it receives.
 struct DirectionalLight {

@@ -54,6 +54,8 @@ ref::PixelSampling pixelSampling(const PreparedJob& p) {
   return p.job->isReference() ? ref::PixelSampling::kArea : ref::PixelSampling::kCenter;
 }
 
+// The spec of the job's reference of `path_class`, or of its obscurance (then the class is every
+// path, which keeps the key canonical: the renderer ignores it).
 ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& path_class) {
   ref::ReferenceSpec spec;
   spec.scene = p.job->scene.nameOrPath();
@@ -62,8 +64,9 @@ ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& p
   spec.height = p.height;
   spec.spp = static_cast<std::uint32_t>(p.job->settings.reference.spp);
   spec.seed = p.job->settings.reference.seed;
-  spec.path_class = path_class;
+  spec.path_class = p.obscurance ? scene::PathClass{} : path_class;
   spec.pixel_sampling = pixelSampling(p);
+  spec.obscurance = p.obscurance;
   return spec;
 }
 
@@ -72,7 +75,7 @@ results::ReferenceUse referenceUse(const ref::StoredReference& stored, double se
   use.key = stored.entry.key;
   use.spp = static_cast<int>(stored.entry.spec.spp);
   use.seed = stored.entry.spec.seed;
-  use.path_class = scene::describePathClass(stored.entry.spec.path_class);
+  use.path_class = ref::describeReferenceQuantity(stored.entry.spec);
   use.store_hit = stored.hit;
   use.pixel_sampling = ref::pixelSamplingName(stored.entry.spec.pixel_sampling);
   use.render_seconds = stored.hit ? 0.0 : seconds;
@@ -85,7 +88,7 @@ ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment&
                                      results::ReferenceUse* use) {
   const ref::ReferenceSpec spec = referenceSpec(p, path_class);
   const std::string what = fmt::format(
-      "reference {} ({}x{}, {} spp, {})", scene::describePathClass(path_class), spec.width,
+      "reference {} ({}x{}, {} spp, {})", ref::describeReferenceQuantity(spec), spec.width,
       spec.height, spec.spp,
       spec.pixel_sampling == ref::PixelSampling::kCenter ? "pixel centres" : "box filter");
   const Clock::time_point start = Clock::now();
@@ -117,6 +120,7 @@ void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env
                                  const JobDirectory& files, const image::Image& test,
                                  const image::Image* disagreement, results::JobResult& result) {
   if (referenceClass(p) == scene::PathClass{}) return;  // the class reference is the full one
+  if (p.obscurance) return;  // an obscurance is not radiance: no full reference measures it
   results::ReferenceUse use;
   const ref::StoredReference full = obtainReference(p, env, scene::PathClass{}, &use);
   result.full_reference = use;
@@ -302,6 +306,8 @@ std::string jobHash(const PreparedJob& p) {
   for (const std::string& metric : s.metrics) hasher.addString(metric);
   for (int checkpoint : s.checkpoints) hasher.addU64(std::uint64_t(checkpoint));
   if (s.iterations) hasher.addString(fmt::format("iterations={}", *s.iterations));
+  // Only for an obscurance, so that the hash of every radiance job stays the same.
+  if (p.obscurance) hasher.addString(scene::describeObscurance(*p.obscurance));
   return hasher.hexDigest();
 }
 
@@ -321,6 +327,7 @@ PreparedJob prepareJob(const Job& job) {
                           fmt::format("technique '{}'", job.technique));
       const std::unique_ptr<rt::Technique> technique = p.technique->create(*p.parameters);
       p.path_class = technique->pathClassAfter(job.settings.iterations.value_or(0));
+      p.obscurance = technique->imageObscurance();
       if (!job.settings.checkpoints.empty() && !technique->iterative())
         throw InputError(fmt::format(
             "checkpoints are iteration counts of an iterative technique, and '{}' renders in "
@@ -354,7 +361,8 @@ results::JobResult describeJob(const PreparedJob& p) {
   result.width = p.width;
   result.height = p.height;
   result.path_class =
-      scene::describePathClass(job.isReference() ? referenceClass(p) : p.path_class);
+      p.obscurance ? scene::describeObscurance(*p.obscurance)
+                   : scene::describePathClass(job.isReference() ? referenceClass(p) : p.path_class);
   result.job_hash = p.hash;
   return result;
 }
@@ -375,10 +383,10 @@ results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
 namespace {
 
 // The classes of the job's references: its class's, then (technique jobs) the full one when that
-// differs.
+// differs; one for an obscurance (referenceSpec makes it the obscurance's).
 std::vector<scene::PathClass> referenceClasses(const PreparedJob& p) {
   std::vector<scene::PathClass> classes = {referenceClass(p)};
-  if (!p.job->isReference() && classes.front() != scene::PathClass{})
+  if (!p.job->isReference() && !p.obscurance && classes.front() != scene::PathClass{})
     classes.push_back(scene::PathClass{});
   return classes;
 }

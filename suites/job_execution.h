@@ -29,8 +29,11 @@ struct PreparedJob {
   const rt::TechniqueInfo* technique = nullptr;  // null for a reference job
   std::optional<ParameterValues> parameters;     // of the technique
   scene::PathClass path_class;                   // of the technique; every path for the reference
-  std::string scene_hash;                        // scene::hashScene, computed once
-  std::string hash;  // what makes a recorded result of this job still valid (resume)
+  // What the technique's image is when it is not radiance (rt::Technique::imageObscurance): the
+  // job is then measured against a reference of this obscurance alone.
+  std::optional<scene::ObscuranceDefinition> obscurance;
+  std::string scene_hash;  // scene::hashScene, computed once
+  std::string hash;        // what makes a recorded result of this job still valid (resume)
 };
 
 // Loads the scene, parses the parameters, checks that checkpoints go with an iterative technique.
@@ -56,7 +59,8 @@ results::JobResult executeJob(const PreparedJob& job, const JobEnvironment& envi
                               const JobDirectory& files, rt::gl::GlIdentity* gl = nullptr);
 
 // The store specs of the references the job is measured against: its class's, then the full
-// one when that differs (a reference job: its class's alone).
+// one when that differs (a reference job: its class's alone; a job whose image is an obscurance:
+// that obscurance's alone).
 std::vector<ref::ReferenceSpec> jobReferences(const PreparedJob& job);
 
 // Fetches the job's references, rendering what the store lacks, and nothing else: what a Slurm

@@ -76,6 +76,29 @@ TEST(RenderCommand, PixelsAreBitIdenticalWithOneOrTwoThreads) {
   EXPECT_EQ(a.metadata, b.metadata);
 }
 
+// --obscurance renders W(x) instead of radiance, and the image says so.
+TEST(RenderCommand, WritesAnObscuranceWithItsMetadata) {
+  TempDir dir;
+  CommandResult r =
+      runGibench(renderArgs(dir / "w.exr", {"--obscurance", "ambient_occlusion",
+                                            "--obscurance-mode", "spectral", "--d-max", "0.1"}),
+                 dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("obscurance(ambient_occlusion, spectral, d_max=0.1)"), std::string::npos)
+      << r.out;
+  image::ExrFile exr = image::readExr(dir / "w.exr");
+  EXPECT_EQ(exr.metadata["gibench/obscurance"],
+            "obscurance(ambient_occlusion, spectral, d_max=0.1)");
+  EXPECT_EQ(exr.metadata["gibench/light_paths"], "none");
+  ASSERT_NE(exr.findLayer("variance"), nullptr);
+  // W lies in [0, 1] (spectral: up to the largest albedo), unlike the light's radiance.
+  const image::Image mean = exr.rgb();
+  for (float v : mean.data()) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << v;
+  // A radiance render carries no such key.
+  ASSERT_EQ(runGibench(renderArgs(dir / "l.exr"), dir.path()).exit_code, 0);
+  EXPECT_EQ(image::readExr(dir / "l.exr").metadata.count("gibench/obscurance"), 0u);
+}
+
 // A path expression's class is recorded as given, in place of the bounce range it replaces.
 TEST(RenderCommand, RecordsThePathExpressionInTheMetadata) {
   TempDir dir;

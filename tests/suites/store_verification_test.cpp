@@ -44,6 +44,19 @@ TEST(StoreVerification, PassesOnAnUntouchedEntry) {
   EXPECT_GT(r.seconds, 0);
 }
 
+TEST(StoreVerification, PassesOnAnUntouchedObscuranceEntryRenderingTheObscuranceAgain) {
+  // The fresh render is of the entry's obscurance (ReferenceSpec::obscurance reaches the
+  // settings): a render of radiance would be hundreds of standard errors away.
+  TempDir dir;
+  ReferenceSpec spec = smallReferenceSpec();
+  spec.obscurance = scene::ObscuranceDefinition{};
+  const StoredReference stored = obtainReference(dir.path(), spec);
+  const VerifyResult r =
+      verifyStoreEntry(ReferenceStore(dir.path()), stored.entry, kVerifySpp, kSignificance);
+  EXPECT_TRUE(r.passed) << r.problem;
+  EXPECT_EQ(r.tested, 6u * 6u * 3u);
+}
+
 TEST(StoreVerification, FailsWhenTheStoredMeanIsTwentyPercentHigh) {
   // What a changed renderer looks like: the stored image 20% brighter than the current one.
   TempDir dir;

@@ -1,0 +1,57 @@
+// The references a job is measured against (suites/job_execution.h): a technique job whose image
+// is an obscurance has that obscurance's reference alone, the one its Slurm reference task
+// renders too.
+#include "suites/job_execution.h"
+
+#include <gtest/gtest.h>
+
+namespace gib::suites {
+namespace {
+
+Job directJob() {
+  Job job;
+  job.suite = "s";
+  job.case_name = "c";
+  job.id = "c";
+  job.slug = "c";
+  job.scene.name = "cornell";
+  job.technique = "direct";
+  job.settings.width = 16;
+  job.settings.height = 12;
+  job.settings.reference.spp = 8;
+  job.settings.reference.seed = 3;
+  return job;
+}
+
+TEST(JobReferences, RadianceJobHasItsClassAndTheFullReference) {
+  const Job job = directJob();
+  const PreparedJob p = prepareJob(job);
+  EXPECT_FALSE(p.obscurance);
+  const std::vector<ref::ReferenceSpec> specs = jobReferences(p);
+  ASSERT_EQ(specs.size(), 2u);
+  EXPECT_EQ(specs[0].path_class, p.path_class);
+  EXPECT_EQ(specs[1].path_class, scene::PathClass{});
+  for (const ref::ReferenceSpec& spec : specs) EXPECT_FALSE(spec.obscurance);
+}
+
+TEST(JobReferences, ObscuranceJobHasItsObscuranceReferenceAlone) {
+  const Job job = directJob();
+  PreparedJob p = prepareJob(job);
+  // As prepareJob records it for a technique whose imageObscurance() is set.
+  const scene::ObscuranceDefinition definition{scene::ObscuranceFalloff::kAmbientOcclusion,
+                                               scene::ObscuranceMode::kSpectral, 0.2f};
+  p.obscurance = definition;
+  const std::vector<ref::ReferenceSpec> specs = jobReferences(p);
+  ASSERT_EQ(specs.size(), 1u);
+  EXPECT_EQ(specs[0].obscurance, definition);
+  // Every path, whatever the technique's class: the key is the obscurance's alone.
+  EXPECT_EQ(specs[0].path_class, scene::PathClass{});
+  EXPECT_EQ(specs[0].pixel_sampling, ref::PixelSampling::kCenter);
+  EXPECT_EQ(specs[0].spp, 8u);
+  EXPECT_EQ(specs[0].seed, 3u);
+  EXPECT_EQ(specs[0].width, 16);
+  EXPECT_EQ(describeJob(p).path_class, scene::describeObscurance(definition));
+}
+
+}  // namespace
+}  // namespace gib::suites
