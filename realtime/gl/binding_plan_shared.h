@@ -13,6 +13,7 @@ namespace gib::rt::gpu {
 const int kGBufferPositionUnit = 0;  // gbuffer/: world position, w ray distance
 const int kGBufferNormalUnit = 1;    // gbuffer/: geometric normal, w material
 const int kShadowMapUnit = 2;        // lighting/: the current batch's shadow maps (an array)
+const int kAddedImageUnit = 3;       // gl/: the image add_image.frag.glsl adds into a frame
 const int kTechniqueFirstUnit = 4;   // 4..7: a technique's own textures
 const int kTechniqueUnitCount = 4;
 const int kAtlasPositionUnit = 8;   // atlas/: xyz sample point, w 1 inside a chart
@@ -20,6 +21,8 @@ const int kAtlasNormalUnit = 9;     // atlas/: xyz unit normal, w world area of 
 const int kAtlasAlbedoUnit = 10;    // atlas/: rgb diffuse reflectance
 const int kAtlasEmissionUnit = 11;  // atlas/: rgb emitted radiance, front side
 const int kMaterialsUnit = 12;      // gpu_scene/: the scene's materials, a buffer texture
+const int kPeelLayersUnit = 13;          // depth_peeling/: the layers of one bundle, an array
+const int kPeelPreviousDepthUnit = 14;  // depth_peeling/: the depth of the layer peeled last
 
 // Image units of compute passes (one program at a time reads one image and writes another, or
 // several: units kImageDestinationUnit and up, at most 4 of them, GL 4.5 offering 8).

@@ -21,7 +21,7 @@ const int kSelectedPanesBinding = kTechniqueFirstStorageBinding + 0;
 const int kEntryPositionUnit = kTechniqueFirstUnit + 0;  // xyz entry point, w 1 where there is one
 const int kEntryNormalUnit = kTechniqueFirstUnit + 1;    // xyz its unit normal
 const int kPanesUnit = kTechniqueFirstUnit + 2;          // the clusters' panes, one layer each
-const int kIndirectUnit = kTechniqueFirstUnit + 3;       // the indirect atlas, or its camera view
+const int kIndirectUnit = kTechniqueFirstUnit + 3;       // the indirect atlas
 
 #ifdef __cplusplus
 static_assert(sizeof(SelectedPane) == 16, "std430 struct SelectedPane");

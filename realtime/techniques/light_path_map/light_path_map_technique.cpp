@@ -140,7 +140,7 @@ void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height
   indirect_framebuffer_.setDrawBuffers(1);
   indirect_framebuffer_.checkComplete();
   combine_pass_ = gl::FullScreenPass("realtime/techniques/light_path_map/combine.frag.glsl");
-  composite_pass_ = gl::FullScreenPass("realtime/techniques/light_path_map/composite.frag.glsl");
+  composite_pass_ = gl::FullScreenPass("realtime/gl/add_image.frag.glsl");
   view_program_ =
       gl::buildProgram({{GL_VERTEX_SHADER, "realtime/atlas/atlas_view.vert.glsl"},
                         {GL_FRAGMENT_SHADER, "realtime/techniques/light_path_map/view.frag.glsl"}});
@@ -264,7 +264,7 @@ void LightPathMapTechnique::render(Frame& frame) {
   auto pass = profiler.pass(kCompositePass);
   frame.target.bind();
   const gl::PipelineScope adding({.blend = gl::kAdditiveBlend});
-  indirect_view_->color().bind(gpu::kIndirectUnit);
+  indirect_view_->color().bind(gpu::kAddedImageUnit);
   composite_pass_.draw();
 }
 
