@@ -10,6 +10,7 @@
 #include "realtime/techniques/irradiance_volume/irradiance_volume_technique.h"
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_technique.h"
 #include "realtime/techniques/light_path_map/light_path_map_technique.h"
+#include "realtime/techniques/obscurances/obscurances_technique.h"
 #include "realtime/techniques/spherical_billboards/spherical_billboards_technique.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
 
@@ -32,7 +33,8 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        irradianceCacheTechniqueInfo(),
                                                        irradianceCacheSplattingTechniqueInfo(),
                                                        sphericalBillboardsTechniqueInfo(),
-                                                       illuminationNetworkTechniqueInfo()};
+                                                       illuminationNetworkTechniqueInfo(),
+                                                       obscurancesTechniqueInfo()};
   return catalogue;
 }
 
