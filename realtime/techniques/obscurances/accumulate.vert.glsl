@@ -12,6 +12,7 @@
 layout(binding = kPeelLayersUnit) uniform sampler2DArray u_layers;
 uniform int u_peel_resolution;
 uniform int u_layer_count;
+uniform int u_truncated;  // peeling stopped at max_layers: surfaces beyond the last layer are unknown
 uniform int u_atlas_resolution;
 uniform int u_spectral;
 uniform int u_falloff;
@@ -36,6 +37,12 @@ void main() {
     return;
   }
   int neighbour = surface.z == kPeelFrontFacing ? layer - 1 : layer + 1;
+  if (neighbour >= u_layer_count && u_truncated != 0) {
+    // The occluder may lie in a layer that was not peeled: no sample rather than a wrong "open".
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    v_sample = vec3(0.0);
+    return;
+  }
   float d = 3.0e38;  // nothing there: the ray leaves the scene
   vec3 albedo = vec3(0.0);
   if (neighbour >= 0 && neighbour < u_layer_count) {

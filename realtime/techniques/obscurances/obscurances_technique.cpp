@@ -184,6 +184,7 @@ void ObscurancesTechnique::buildObscuranceMap() {
           {.blend = gl::kAdditiveBlend, .viewport = gl::PixelRect{0, 0, r, r}});
       a.use();
       a.set("u_layer_count", layers);
+      a.set("u_truncated", layers == settings_.max_layers ? 1 : 0);
       atlas_->bind();
       peeler_->layers().bind(gpu::kPeelLayersUnit);
       points_.bind();
@@ -356,8 +357,9 @@ TechniqueInfo obscurancesTechniqueInfo() {
                             "global ray bundles (uniformly distributed directions)"),
            numericParameter("peel_resolution", ParameterType::kInteger, "256", 8, 4096, "pixels",
                             "rays per side of a bundle (the orthographic view peeled)"),
-           numericParameter("max_layers", ParameterType::kInteger, "8", 1, 64, "",
-                            "layers peeled per bundle at most (surfaces a ray can cross)"),
+           numericParameter("max_layers", ParameterType::kInteger, "16", 1, 64, "",
+                            "layers peeled per bundle at most (surfaces a ray can cross; the "
+                            "chamber's rays cross up to 13)"),
            atlasParameter(128, "obscurances map (atlas) texels per side"),
            choiceParameter("light_weighting", "none", {"none", "distance"},
                            "distance: the ambient term weighted by the inverse squared distance "

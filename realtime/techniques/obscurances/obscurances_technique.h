@@ -51,7 +51,7 @@ struct ObscurancesSettings {
   scene::ObscuranceDefinition definition;
   int directions = 64;
   int peel_resolution = 256;
-  int max_layers = 8;
+  int max_layers = 16;
   int atlas_resolution = 128;
   bool light_weighting = false;  // Fig. 10.6
   bool moving_light = false;
