@@ -251,11 +251,12 @@ void expectMeshMeansAgreeWithEmbree(const scene::Scene& scene, const std::vector
 }
 
 TEST_F(ObscurancesTest, AClosedBoxAgreesWithTheEmbreeEstimate) {
+  // d_max beyond the box's diagonal: every ray is occluded, and ρ(d) = √(d/d_max) weighs it.
   scene::ObscuranceDefinition definition;
   definition.mode = scene::ObscuranceMode::kScalar;
-  definition.d_max_fraction = 0.3f;
+  definition.d_max_fraction = 1.01f;
   expectMeshMeansAgreeWithEmbree(
-      closedBox(), {"mode=scalar", "d_max=0.3", "directions=32", "peel_resolution=96", "atlas=64"},
+      closedBox(), {"mode=scalar", "d_max=1.01", "directions=32", "peel_resolution=96", "atlas=64"},
       definition);
 }
 
