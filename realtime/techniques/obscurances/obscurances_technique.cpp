@@ -133,6 +133,7 @@ void ObscurancesTechnique::prepare(const GpuScene& scene, int width, int height)
   source_ = gl::Texture::make2D(GL_RGBA32F, r, r);
   const std::vector<glm::vec4> source = sourceTexels(texels_);
   source_.upload(&source[0].x, GL_RGBA);
+  points_.emplace();
   accumulate_program_ = gl::buildProgram(
       {{GL_VERTEX_SHADER, "realtime/techniques/obscurances/accumulate.vert.glsl"},
        {GL_FRAGMENT_SHADER, "realtime/techniques/obscurances/accumulate.frag.glsl"}});
@@ -187,7 +188,7 @@ void ObscurancesTechnique::buildObscuranceMap() {
       a.set("u_truncated", layers == settings_.max_layers ? 1 : 0);
       atlas_->bind();
       peeler_->layers().bind(gpu::kPeelLayersUnit);
-      points_.bind();
+      points_->bind();
       const long long points =
           (long long)settings_.peel_resolution * settings_.peel_resolution * layers;
       if (points > 0) gl::drawArrays(GL_POINTS, 0, GLsizei(points));
@@ -228,17 +229,20 @@ void ObscurancesTechnique::drawView(const RenderTarget& target, bool show_obscur
   // changes; recomputed for the light's place in this frame.
   const glm::vec3 light = light_position_ + light_offset;
   const float offset = d_max_ * d_max_;
-  double weighted = 0, area = 0;
-  if (weighting)
+  if (weighting && weighted_light_ != light) {
+    double weighted = 0, area = 0;
     for (const atlas::AtlasTexel& t : texels_.texels)
       if (t.area > 0) {
         const glm::vec3 to_light = light - t.position;
         weighted += double(t.area) / (double(glm::dot(to_light, to_light)) + offset);
         area += t.area;
       }
+    weight_scale_ = weighted > 0 ? float(area / weighted) : 1.0f;
+    weighted_light_ = light;
+  }
   view_program_.set("u_light_position", light);
   view_program_.set("u_weight_offset", offset);
-  view_program_.set("u_weight_scale", weighted > 0 ? float(area / weighted) : 1.0f);
+  view_program_.set("u_weight_scale", weight_scale_);
   scene_->bindSceneBuffers();
   atlas_->bind();
   obscurance_.bind(gpu::kObscuranceMapUnit);

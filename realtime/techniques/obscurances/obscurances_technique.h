@@ -116,7 +116,11 @@ class ObscurancesTechnique final : public Technique {
   glm::vec3 last_light_offset_{0.0f};
   gl::Program accumulate_program_, view_program_;
   gl::FullScreenPass normalize_pass_, composite_pass_;
-  gl::VertexArray points_;
+  std::optional<gl::VertexArray> points_;  // attribute-less: the points read the layers
+  // The light weighting's normaliser, 1 / the area mean of 1/(|x − p|² + d_max²), for the light
+  // at `weighted_light_` (recomputed only when the light moves).
+  float weight_scale_ = 1.0f;
+  std::optional<glm::vec3> weighted_light_;
 };
 
 TechniqueInfo obscurancesTechniqueInfo();
