@@ -46,4 +46,15 @@ void AtlasTextures::bind() const {
   emission_.bind(gpu::kAtlasEmissionUnit);
 }
 
+std::vector<glm::vec3> atlasTexelValues(const image::Image& image) {
+  const int r = image.height();
+  std::vector<glm::vec3> values(std::size_t(image.width()) * std::size_t(r));
+  for (int y = 0; y < r; ++y)  // the image's rows run top to bottom, GL's bottom to top
+    for (int x = 0; x < image.width(); ++x) {
+      const float* v = image.pixel(x, r - 1 - y);
+      values[std::size_t(y * image.width() + x)] = {v[0], v[1], v[2]};
+    }
+  return values;
+}
+
 }  // namespace gib::rt::atlas

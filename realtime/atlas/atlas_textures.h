@@ -2,8 +2,13 @@
 // texel, read with texelFetch by passes that run over the atlas and bilinearly by views of it.
 #pragma once
 
+#include "image/image.h"
 #include "realtime/atlas/atlas_layout.h"
 #include "realtime/gl/objects.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
 
 namespace gib::rt::atlas {
 
@@ -24,5 +29,10 @@ class AtlasTextures {
   int resolution_;
   gl::Texture position_, normal_, albedo_, emission_;
 };
+
+// An atlas-sized RGB image as read back (image::Image: top row first) turned into one value per
+// texel in the order of AtlasTexels (row 0 at the bottom, GL's), so that tests and techniques
+// pair each value with its texel.
+std::vector<glm::vec3> atlasTexelValues(const image::Image& image);
 
 }  // namespace gib::rt::atlas

@@ -14,6 +14,7 @@
 #include "scene/mesh_builder.h"
 #include "support/form_factor.h"
 #include "support/gl_test_context.h"
+#include "support/inward_box.h"
 #include "support/render_statistics.h"
 #include "support/statistical_test.h"
 #include "support/technique_frame.h"
@@ -156,12 +157,8 @@ TEST(LightPathMapWalks, PathLengthsFollowTheAlbedo) {
   grey.diffuse = scene::Rgb(0.5f);
   s.materials = {grey};
   scene::Mesh box;  // the unit cube, every face's normal inwards
-  scene::appendQuad(box, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0});
-  scene::appendQuad(box, {0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1});
-  scene::appendQuad(box, {0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1});
-  scene::appendQuad(box, {1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0});
-  scene::appendQuad(box, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});
-  scene::appendQuad(box, {0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1});
+  for (const auto& q : test::inwardBoxFaces(glm::vec3(0), glm::vec3(1)))
+    scene::appendQuad(box, q[0], q[1], q[2], q[3]);
   s.meshes = {box};
   const std::vector<atlas::AtlasTriangle> triangles = atlas::atlasTriangles(s);
   double area = 0;

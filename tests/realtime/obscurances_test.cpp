@@ -14,6 +14,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "support/gl_test_context.h"
+#include "support/inward_box.h"
 #include "support/statistical_test.h"
 #include "support/technique_frame.h"
 
@@ -161,16 +162,10 @@ TEST_F(ObscurancesTest, ParallelPlanesMatchTheClosedForm) {
   }
 }
 
-// The inside of a closed cube [−1, 1]³: six quads facing inwards.
+// The inside of a closed cube [−1, 1]³: six quads facing inwards, a mesh each.
 scene::Scene closedBox() {
-  return quadScene({
-      {{{-1, -1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, -1, -1}}},  // floor, +y
-      {{{-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}}},      // ceiling, −y
-      {{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}}},  // back, +z
-      {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}}},      // front, −z
-      {{{-1, -1, -1}, {-1, 1, -1}, {-1, 1, 1}, {-1, -1, 1}}},  // left, +x
-      {{{1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {1, 1, -1}}},      // right, −x
-  });
+  const auto faces = test::inwardBoxFaces(glm::vec3(-1), glm::vec3(1));
+  return quadScene(std::vector<std::array<glm::vec3, 4>>(faces.begin(), faces.end()));
 }
 
 TEST_F(ObscurancesTest, AClosedBoxIsFullyOccludedWithinItsDiagonal) {

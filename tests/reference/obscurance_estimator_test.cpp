@@ -5,6 +5,7 @@
 
 #include "reference/path_sampler.h"
 #include "scene/mesh_builder.h"
+#include "support/inward_box.h"
 #include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
@@ -54,12 +55,8 @@ scene::Scene makeClosedBox() {
   s.name = "box";
   s.materials = {diffuse(0.5f)};
   scene::Mesh box;
-  scene::appendQuad(box, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0});
-  scene::appendQuad(box, {0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1});
-  scene::appendQuad(box, {0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1});
-  scene::appendQuad(box, {1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0});
-  scene::appendQuad(box, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});
-  scene::appendQuad(box, {0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1});
+  for (const auto& q : test::inwardBoxFaces(glm::vec3(0), glm::vec3(1)))
+    scene::appendQuad(box, q[0], q[1], q[2], q[3]);
   s.meshes = {box};
   return s;
 }

@@ -273,15 +273,7 @@ void ObscurancesTechnique::render(Frame& frame) {
 }
 
 std::vector<glm::vec3> ObscurancesTechnique::obscuranceMap() const {
-  const image::Image image = gl::readTexture(obscurance_, 3);
-  const int r = image.height();
-  std::vector<glm::vec3> w(std::size_t(r) * std::size_t(r));
-  for (int y = 0; y < r; ++y)  // the image's rows run top to bottom, GL's bottom to top
-    for (int x = 0; x < r; ++x) {
-      const float* v = image.pixel(x, r - 1 - y);
-      w[std::size_t(y * r + x)] = {v[0], v[1], v[2]};
-    }
-  return w;
+  return atlas::atlasTexelValues(gl::readTexture(obscurance_, 3));
 }
 
 // Book Fig. 10.9: the first layers of a bundle along the camera's view, side by side in rows of

@@ -160,15 +160,7 @@ image::Image StochasticRadiosityTechnique::atlasImage() const {
 }
 
 std::vector<glm::vec3> StochasticRadiosityTechnique::atlasRadiance() const {
-  const image::Image image = atlasImage();
-  const int r = image.height();
-  std::vector<glm::vec3> radiance(std::size_t(r) * std::size_t(r));
-  for (int y = 0; y < r; ++y)  // the image's rows run top to bottom, GL's bottom to top
-    for (int x = 0; x < r; ++x) {
-      const float* v = image.pixel(x, r - 1 - y);
-      radiance[std::size_t(y * r + x)] = {v[0], v[1], v[2]};
-    }
-  return radiance;
+  return atlas::atlasTexelValues(atlasImage());
 }
 
 std::vector<AuxiliaryImage> StochasticRadiosityTechnique::auxiliaryImages() {
