@@ -21,5 +21,6 @@ CommandRunner addReportCommand(CLI::App& app);
 CommandRunner addExportBlenderCommand(CLI::App& app);
 CommandRunner addMergeCommand(CLI::App& app);
 CommandRunner addSolidAngleBenchCommand(CLI::App& app);
+CommandRunner addRaycastBenchCommand(CLI::App& app);
 
 }  // namespace gib::cli

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addExportBlenderCommand, "export-blender");
   add(&gib::cli::addMergeCommand, "merge");
   add(&gib::cli::addSolidAngleBenchCommand, "solid-angle-bench");
+  add(&gib::cli::addRaycastBenchCommand, "raycast-bench");
 
   // CLI11 reports a mistyped command as "A subcommand is required", which does not name it.
   if (argc > 1 && argv[1][0] != '-') {

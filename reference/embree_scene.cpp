@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -29,12 +30,25 @@ void check(RTCDevice device, const char* what) {
 struct EmbreeScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  // What the device holds (its memory monitor's running sum; Embree calls it from its build
+  // threads, hence atomic).
+  std::atomic<std::int64_t> bytes{0};
 };
+
+namespace {
+
+bool countEmbreeBytes(void* user, ssize_t bytes, bool) {
+  static_cast<std::atomic<std::int64_t>*>(user)->fetch_add(std::int64_t(bytes));
+  return true;  // never refuse an allocation
+}
+
+}  // namespace
 
 EmbreeScene::EmbreeScene(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
   impl_->device = rtcNewDevice(nullptr);
   if (!impl_->device) throw std::runtime_error("cannot create an Embree device");
   rtcSetDeviceErrorFunction(impl_->device, onEmbreeError, nullptr);
+  rtcSetDeviceMemoryMonitorFunction(impl_->device, countEmbreeBytes, &impl_->bytes);
   impl_->scene = rtcNewScene(impl_->device);
   rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
@@ -68,6 +82,10 @@ EmbreeScene::EmbreeScene(const scene::Scene& scene) : impl_(std::make_unique<Imp
   // Hit points carry an error of a few ulps of their largest coordinate; 1e-5 of the extent is
   // ~100 ulps, far above that and far below any feature of our scenes.
   ray_epsilon_ = std::max(1e-5f * extent, 1e-6f);
+}
+
+std::size_t EmbreeScene::bytes() const {
+  return std::size_t(std::max<std::int64_t>(0, impl_->bytes.load()));
 }
 
 EmbreeScene::~EmbreeScene() {

@@ -41,6 +41,9 @@ class EmbreeScene {
   // An offset for spawned rays that keeps them off the surface they leave: relative to the
   // scene's extent, since float error in a hit point grows with its coordinates.
   float rayEpsilon() const { return ray_epsilon_; }
+  // The bytes Embree's device holds for the scene (its memory monitor: the BVH, the vertex and
+  // index buffers), for the raycast bench's table.
+  std::size_t bytes() const;
 
  private:
   struct Impl;

@@ -153,7 +153,8 @@ Texture Texture::makeBuffer(GLenum format, const Buffer& buffer) {
   int texel_bytes = 0;
   if (format == GL_RGBA32F) texel_bytes = 16;
   if (format == GL_RG32F) texel_bytes = 8;
-  if (format == GL_R32F) texel_bytes = 4;
+  if (format == GL_R32F || format == GL_R32UI) texel_bytes = 4;
+  if (format == GL_R8UI) texel_bytes = 1;
   if (texel_bytes == 0)
     throw std::invalid_argument(fmt::format("buffer texture of format 0x{:x}", format));
   GLint bytes = 0;

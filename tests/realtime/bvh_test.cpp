@@ -320,9 +320,11 @@ TEST_F(BvhGpu, IsMadeByNameAndCountsItsBytes) {
   const std::unique_ptr<GpuRayStructure> structure = makeGpuRayStructure("bvh", scenes().cornell);
   ASSERT_EQ(structure->name(), "bvh");
   const auto& gpu_bvh = dynamic_cast<const GpuBvh&>(*structure);
-  EXPECT_EQ(structure->bytes(), gpu_bvh.bvh().bytes() + scenes().cornell.size() *
-                                                            gpu::kRayTriangleTexels *
-                                                            sizeof(glm::vec4));
+  // The nodes, and the triangles' texels with the slots' indices after them.
+  EXPECT_EQ(structure->bytes(),
+            gpu_bvh.bvh().bytes() +
+                packRayTriangles(scenes().cornell, gpu_bvh.bvh().triangle_order).size() *
+                    sizeof(glm::vec4));
   EXPECT_EQ(gpuRayStructureNames().back(), "bvh");
 }
 
