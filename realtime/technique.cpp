@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
+#include "realtime/techniques/gpu_ray_tracing/gpu_ray_tracing_technique.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
 #include "realtime/techniques/illumination_network/illumination_network_technique.h"
 #include "realtime/techniques/irradiance_cache/irradiance_cache_technique.h"
@@ -34,7 +35,8 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        irradianceCacheSplattingTechniqueInfo(),
                                                        sphericalBillboardsTechniqueInfo(),
                                                        illuminationNetworkTechniqueInfo(),
-                                                       obscurancesTechniqueInfo()};
+                                                       obscurancesTechniqueInfo(),
+                                                       gpuRayTracingTechniqueInfo()};
   return catalogue;
 }
 
