@@ -9,8 +9,9 @@
 #
 #   --out DIR       where everything goes (made if missing; rerun with the same DIR to resume the
 #                   suite's run): bench.json and bench.log, the suite gpu-figures.toml, its run
-#                   directory gpu-figures/ (results.json, the report), its reference store, and
-#                   the table <renderer>.md
+#                   directory gpu-figures/ (results.json, the report), its reference store, the
+#                   ray-casting bench raycast/ (raycast.json, its page) and the table
+#                   <renderer>.md
 #   --quick         one benchmark per technique, for one iteration, and one timing job for one
 #                   frame: tests the script
 #   --gibench PATH  default build/release/cli/gibench
@@ -83,7 +84,7 @@ if [ -n "$quick" ]; then
     python3 "$table" bench-filter --first "${techniques[@]}")
 fi
 count=$("$bench" --benchmark_list_tests --benchmark_filter="$filter" | wc -l)
-progress "[1/3] gib_realtime_bench: $count benchmarks of ${#techniques[@]} techniques (log: $out/bench.log)"
+progress "[1/4] gib_realtime_bench: $count benchmarks of ${#techniques[@]} techniques (log: $out/bench.log)"
 # One line per benchmark as it ends (its name and time); the whole output in bench.log.
 set +e
 stdbuf -oL "$bench" --benchmark_filter="$filter" --benchmark_min_time="$min_time" \
@@ -102,7 +103,7 @@ progress "GL renderer: $renderer"
 job_ids=$(python3 "$root/scripts/gpu_figures_suite.py" "$root/suites/figures" "$out/$name.toml" ${quick:+--quick})
 only=()
 while read -r id; do only+=(--only "$id"); done <<<"$job_ids"
-progress "[2/3] gibench run: $((${#only[@]} / 2)) timing jobs of the figure suites (run: $out/$name)"
+progress "[2/4] gibench run: $((${#only[@]} / 2)) timing jobs of the figure suites (run: $out/$name)"
 # gibench's line for each job as it ends; the whole log in run.log. Exit status 1: some jobs
 # failed (the table marks them); 2: bad input or no GL (its one line says which).
 set +e
@@ -115,7 +116,18 @@ if [ "$status" -ne 0 ] && [ "$status" -ne 1 ]; then
   exit "$status"
 fi
 
-# 3. The table.
-written=$(python3 "$table" markdown "$out/bench.json" "$out/$name" "$out" "${techniques[@]}" ${quick:+--quick})
-progress "[3/3] wrote $written"
+# 3. Ray casting against Embree (book Ch. 5): the chamber at every detail at 512², each kind of
+# rays; with --quick the Cornell box at 16².
+raycast_args=(--scene chamber --sweep detail=1,2,3,4,5 --width 512 --height 512 --repeats 5)
+[ -z "$quick" ] || raycast_args=(--scene cornell --width 16 --height 16 --repeats 1)
+progress "[3/4] gibench raycast-bench ${raycast_args[*]} (log: $out/raycast.log)"
+if ! "$gibench" raycast-bench "${raycast_args[@]}" --out "$out/raycast" >"$out/raycast.log" 2>&1; then
+  progress "gibench raycast-bench failed: $(tail -n 1 "$out/raycast.log")"
+  exit 1
+fi
+
+# 4. The table.
+written=$(python3 "$table" markdown "$out/bench.json" "$out/$name" "$out" "${techniques[@]}" \
+  --raycast "$out/raycast/raycast.json" ${quick:+--quick})
+progress "[4/4] wrote $written"
 exit "$status"

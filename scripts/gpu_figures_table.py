@@ -5,6 +5,7 @@
   gpu_figures_table.py bench-filter --first TECHNIQUE...  < names: the first of each technique
   gpu_figures_table.py renderer BENCH.json                the GL renderer the benchmarks ran on
   gpu_figures_table.py markdown BENCH.json RUN_DIR OUT_DIR TECHNIQUE... [--quick]
+                                     [--raycast RAYCAST.json]  with the ray-casting table
                                                           writes OUT_DIR/<renderer>.md, prints it
 
 A technique's benchmarks in gib_realtime_bench are the families BM_<Technique>Frame… (a frame)
@@ -190,7 +191,29 @@ def pass_tables(results):
     return text
 
 
-def markdown(bench, results, techniques, quick):
+def raycast_section(raycast):
+    """The table of `gibench raycast-bench` (book Ch. 5): M rays/s and mismatches per structure."""
+    text = ("\n## Ray casting against Embree (book Ch. 5)\n\n`gibench raycast-bench`: the same "
+            "rays cast by Embree on every CPU core and by each GPU structure; mismatches against "
+            "Embree under the tie rule (realtime/ray_casting/README.md). The book: 10–20 M rays/s "
+            "on 10 000–100 000 triangles.\n\n")
+    rows = []
+    for case in raycast["cases"]:
+        scene = " ".join([case["scene"]] + case["scene_parameters"])
+        for s in case["structures"]:
+            if "skipped" in s:
+                rows.append([scene, case["rays"], f"{case['triangles']:,}", s["name"], "skipped",
+                             "—", "—", "—"])
+                continue
+            rows.append([scene, case["rays"], f"{case['triangles']:,}", s["name"],
+                         "—" if s["name"] == "embree" else str(s["mismatches"]),
+                         number(s["mrays_per_second"]), number(s["build_ms"]),
+                         "—" if s["bytes"] is None else number(s["bytes"] / 1048576)])
+    return text + table(["scene", "rays", "triangles", "structure", "mismatches", "M rays/s",
+                         "build ms", "MiB"], rows)
+
+
+def markdown(bench, results, techniques, quick, raycast=None):
     run = results["run"]
     renderer = bench_renderer(bench)
     if run["gl_renderer"] and run["gl_renderer"] != renderer:
@@ -224,6 +247,8 @@ def markdown(bench, results, techniques, quick):
     text += table(["job", "quantity", "ours", "paper", "ours/paper", "unit", "source"],
                   paper_rows(results))
     text += "\n## Per-pass times of the timing jobs\n" + pass_tables(results)
+    if raycast is not None:
+        text += raycast_section(raycast)
     return renderer, text
 
 
@@ -239,16 +264,24 @@ def main(argv):
     elif command == "markdown" and len(args) >= 4:
         quick = "--quick" in args
         args = [a for a in args if a != "--quick"]
+        raycast = None
+        if "--raycast" in args:
+            at = args.index("--raycast")
+            if at + 1 >= len(args):
+                raise InputError("--raycast needs the path of raycast.json")
+            raycast = load_json(args[at + 1], "the ray-casting bench's JSON")
+            del args[at:at + 2]
         bench = load_json(args[0], "the benchmarks' JSON")
         results = load_json(pathlib.Path(args[1]) / "results.json", "the run's results")
-        renderer, text = markdown(bench, results, args[3:], quick)
+        renderer, text = markdown(bench, results, args[3:], quick, raycast)
         out = pathlib.Path(args[2]) / f"{slug(renderer)}.md"
         out.write_text(text, encoding="utf-8")
         print(out)
     else:
         raise InputError("usage: gpu_figures_table.py bench-filter [--first] TECHNIQUE... | "
                          "renderer BENCH.json | markdown BENCH.json RUN_DIR OUT_DIR TECHNIQUE... "
-                         "[--quick]; see the comment at the top of the file")
+                         "[--quick] [--raycast RAYCAST.json]; see the comment at the top of the "
+                         "file")
 
 
 if __name__ == "__main__":

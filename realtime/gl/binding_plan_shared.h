@@ -16,13 +16,18 @@ const int kShadowMapUnit = 2;        // lighting/: the current batch's shadow ma
 const int kAddedImageUnit = 3;       // gl/: the image add_image.frag.glsl adds into a frame
 const int kTechniqueFirstUnit = 4;   // 4..7: a technique's own textures
 const int kTechniqueUnitCount = 4;
-const int kAtlasPositionUnit = 8;   // atlas/: xyz sample point, w 1 inside a chart
-const int kAtlasNormalUnit = 9;     // atlas/: xyz unit normal, w world area of the texel
-const int kAtlasAlbedoUnit = 10;    // atlas/: rgb diffuse reflectance
-const int kAtlasEmissionUnit = 11;  // atlas/: rgb emitted radiance, front side
-const int kMaterialsUnit = 12;      // gpu_scene/: the scene's materials, a buffer texture
-const int kPeelLayersUnit = 13;          // depth_peeling/: the layers of one bundle, an array
+const int kAtlasPositionUnit = 8;       // atlas/: xyz sample point, w 1 inside a chart
+const int kAtlasNormalUnit = 9;         // atlas/: xyz unit normal, w world area of the texel
+const int kAtlasAlbedoUnit = 10;        // atlas/: rgb diffuse reflectance
+const int kAtlasEmissionUnit = 11;      // atlas/: rgb emitted radiance, front side
+const int kMaterialsUnit = 12;          // gpu_scene/: the scene's materials, a buffer texture
+const int kPeelLayersUnit = 13;         // depth_peeling/: the layers of one bundle, an array
 const int kPeelPreviousDepthUnit = 14;  // depth_peeling/: the depth of the layer peeled last
+// ray_casting/: a structure's buffer textures (ray_casting_shared.h). Past GL 4.5's guaranteed 16
+// units per stage; rt::checkRayCastingLimits checks the driver offers them (Mesa and NVIDIA: 32).
+const int kRayTrianglesUnit = 15;  // the triangles' IVMs and apexes, then the slots' indices
+const int kRayNodesUnit = 16;      // the structure's nodes
+const int kRayFlagsUnit = 17;      // the loose kd-tree's node flags
 
 // Image units of compute passes (one program at a time reads one image and writes another, or
 // several: units kImageDestinationUnit and up, at most 4 of them, GL 4.5 offering 8).

@@ -41,7 +41,9 @@ struct Box {
 // direction component is inside or outside the slab as the sign of its zero says
 // (kBvhTinyDirection). With this margin no triangle's accepted region, rounding included, comes
 // near a box face, so neither decides a hit. 10⁻⁵ is ~170 ulps: the tests' rays along box faces
-// found hits outside a box padded by one ulp, none with this margin.
+// found hits outside a box padded by one ulp, none with this margin. It also covers the test's
+// rounding term (kIvmRoundingTolerance: a hit at most 4·10⁻⁶ of the ray origin's distance outside
+// its triangle) for origins within twice the set's largest coordinate of the triangle.
 constexpr double kBoxMargin = 1e-5;
 
 // The bounds of what the IVM test accepts of triangle t, grown by `margin`, in float, rounded

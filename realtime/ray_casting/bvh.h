@@ -1,9 +1,9 @@
 // A binary bounding volume hierarchy for the ray-casting table
-// (realtime/ray_casting/README-bvh.md): what a modern GPU ray caster traverses, beside the book's
-// structures of Ch. 5 (the ray engine, the loose kd-tree; §5.4.3 cites a stackless, threaded BVH).
-// Built on the CPU with the binned surface-area heuristic (Wald, "On fast construction of SAH-based
-// bounding volume hierarchies", IEEE Symposium on Interactive Ray Tracing 2007), laid out and
-// traversed as Aila & Laine, "Understanding the efficiency of ray traversal on GPUs" (HPG 2009)
+// (realtime/ray_casting/README.md, "The BVH"): what a modern GPU ray caster traverses, beside the
+// book's structures of Ch. 5 (the ray engine, the loose kd-tree; §5.4.3 cites a stackless, threaded
+// BVH). Built on the CPU with the binned surface-area heuristic (Wald, "On fast construction of
+// SAH-based bounding volume hierarchies", IEEE Symposium on Interactive Ray Tracing 2007), laid out
+// and traversed as Aila & Laine, "Understanding the efficiency of ray traversal on GPUs" (HPG 2009)
 // describe: both children's boxes in the parent, a "while-while" loop with a per-ray stack
 // (bvh_shared.h, bvh.glsl). Its leaves test triangles with the book's IVM test (§5.1), as every
 // structure of the table does, so the table compares structures, not triangle tests.

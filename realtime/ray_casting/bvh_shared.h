@@ -1,6 +1,6 @@
-// The BVH of the ray-casting table (realtime/ray_casting/README-bvh.md), written once for its CPU
-// builder, its CPU traversal (which the tests hold the GPU to) and its shader: the node record,
-// the child references, the stack bound and the ray-box slab test.
+// The BVH of the ray-casting table (realtime/ray_casting/README.md, "The BVH"), written once for
+// its CPU builder, its CPU traversal (which the tests hold the GPU to) and its shader: the node
+// record, the child references, the stack bound and the ray-box slab test.
 //
 // The layout is Aila & Laine's ("Understanding the efficiency of ray traversal on GPUs", HPG
 // 2009): an inner node holds the boxes of BOTH its children and their references, so one fetch

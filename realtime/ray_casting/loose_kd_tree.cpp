@@ -23,9 +23,10 @@ namespace {
 // are computed apart: the IVM test accepts points up to kIvmEdgeTolerance (10⁻⁵) of the
 // triangle's size outside it, and (plane − o)·(1/d) rounds (a few ulps; GLSL's reciprocal is
 // looser). Without the margin a ray through a vertex on a cell's face could find the hit by brute
-// force and miss the leaf here. 4·10⁻⁵ of the diagonal covers the edge tolerance four times over
-// and the rounding of t for origins within ~100 diagonals of the scene; the cells grow by less
-// than the halves' own rounding already makes them.
+// force and miss the leaf here. 4·10⁻⁵ of the diagonal covers the edge tolerance four times over,
+// the test's rounding term (kIvmRoundingTolerance: 4·10⁻⁶ of the origin's distance) for origins
+// within ten diagonals, and the rounding of t for origins within ~100 diagonals of the scene; the
+// cells grow by less than the halves' own rounding already makes them.
 constexpr float kCellSlackFraction = 4e-5f;
 
 constexpr std::uint16_t kHalfPlusInfinity = 0x7c00;

@@ -2,7 +2,7 @@
 // surface area heuristic of §5.4.4 adapted to loose cells (Fig. 5.12), packed into the compact
 // blocks of Fig. 5.13 (loose_kd_tree_shared.h), traversed on the GPU (loose_kd_tree.glsl) and,
 // for the tests, by the same algorithm on the CPU over the same packed words.
-// realtime/ray_casting/README-loose-kd-tree.md describes the layout and the choices.
+// realtime/ray_casting/README.md, "The loose kd-tree" describes the layout and the choices.
 #pragma once
 
 #include "realtime/gl/objects.h"
@@ -22,7 +22,7 @@ struct LooseKdTreeSettings {
   // A cell of at most this many triangles becomes a leaf without a cut being tried (1 to
   // gpu::kLooseKdMaxLeafTriangles). On the chamber at detail 5 the CPU traversal cast as fast
   // with 4 as with 2 (which needs 1.7 times the node words) and faster than with 8 or 16
-  // (README-loose-kd-tree.md).
+  // (README.md).
   int max_leaf_triangles = 4;
   // SAH costs (§5.4.4): a cut costs traversal_cost + (A_L·N_L + A_R·N_R)/A · intersection_cost,
   // a leaf N · intersection_cost. Only their ratio matters; the IVM test fetches three texels

@@ -1,6 +1,7 @@
-// The loose kd-tree of book §5.5 (realtime/ray_casting/README-loose-kd-tree.md), written once for
-// its CPU builder, its CPU traversal (which the tests hold the GPU to) and its shader: the node
-// word, the flags, the blocks of the compact layout, the stack bound and the step through a cut.
+// The loose kd-tree of book §5.5 (realtime/ray_casting/README.md, "The loose kd-tree"), written
+// once for its CPU builder, its CPU traversal (which the tests hold the GPU to) and its shader: the
+// node word, the flags, the blocks of the compact layout, the stack bound and the step through a
+// cut.
 //
 // A loose kd-tree cuts a cell into two cells that may overlap or leave a gap (Fig. 5.11): every
 // triangle goes wholly into one child, and each child stores the one plane the cut moved, the
@@ -38,7 +39,7 @@ const uint kLooseKdLeafFlag = 3u;
 // block and in-block index are a shift and a mask rather than an integer division (the padding
 // slot is an empty leaf no child index reaches). The root is node 0 of block 0.
 //
-// Four levels (15 nodes, 16 slots): on the chamber at detail 5 (README-loose-kd-tree.md) three
+// Four levels (15 nodes, 16 slots): on the chamber at detail 5 (README.md) three
 // levels take 600 KiB of words and flags, four 835, five 1 030, eight 7 300, since a block opened
 // under an unbalanced subtree leaves most of its slots empty; fewer levels redirect more often
 // (a dependent fetch per block crossed: every second cut at three levels, every third at four).

@@ -18,13 +18,9 @@ using glm::min;
 using glm::sqrt;
 #endif
 
-// The texture units of a structure's data, buffer textures all (llvmpipe gathers a texel fetch
-// across a SIMD row; docs/architecture.md, "Declared GPU layouts"). Past the shared blocks' 0–14:
-// a pass that casts rays reads these three besides its own, and gl::checkRayCastingUnits makes
-// sure the driver offers them (every GL 4.5 driver we know offers 32; the minimum is 16).
-const int kRayTrianglesUnit = 15;  // RGBA32F, kRayTriangleTexels texels per triangle
-const int kRayNodesUnit = 16;      // the structure's nodes (its own format)
-const int kRayFlagsUnit = 17;      // the loose kd-tree's node flags (R8UI); unused by the others
+// A structure's data are buffer textures (llvmpipe gathers a texel fetch across a SIMD row;
+// docs/architecture.md, "Declared GPU layouts") at kRayTrianglesUnit, kRayNodesUnit and
+// kRayFlagsUnit (binding_plan_shared.h).
 
 // A triangle is three RGBA32F texels: the rows of its IVM in xyz and, in their w, its apex: the
 // point its IVM is relative to (IvmTriangle::apex). After every triangle's texels, the list index

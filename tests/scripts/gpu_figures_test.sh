@@ -56,6 +56,10 @@ while read -r technique; do
   check "a frame time of $technique" grep -qE "^\| $technique \| [^|]+ \| $number \|" "$table"
 done < <("$gibench" list techniques | awk '/^[a-z]/ && $1 != "reference" { print $1 }')
 
+# The ray-casting table (book Ch. 5): a row of M rays/s for Embree and for the BVH.
+check "the ray-casting table's Embree row" grep -qE "^\| cornell \| primary \| 32 \| embree \| — \| $number \|" "$table"
+check "the ray-casting table's BVH row" grep -qE "^\| cornell \| primary \| 32 \| bvh \| 0 \| $number \|" "$table"
+
 # The papers' numbers beside ours: the header, and a row with both numbers.
 check "the papers' column" grep -qF "| job | quantity | ours | paper | ours/paper | unit | source |" "$table"
 check "a paper's number beside ours" grep -qE "^\| [^|]+ \| [^|]+ \| $number \| $number \| [^|]+ \| ms \|" "$table"

@@ -24,8 +24,8 @@ const int kMaxTraceDepth = 12;
 
 // A secondary ray leaves its surface this fraction of the scene's bounding-box diagonal along the
 // geometric normal on its side, so that it does not hit its own triangle again: ten times
-// Embree's 1e-5 (reference/embree_scene.cpp), since the IVM test computes t through the plane's
-// reciprocal distance from the set's origin in single precision and is a few times less exact.
+// Embree's 1e-5 (reference/embree_scene.cpp), since the IVM test computes t in single precision
+// from the ray's origin relative to the triangle's apex, a few times less exact than Embree's.
 const float kTraceRayOffsetFraction = 1.0e-4f;
 
 #ifdef __cplusplus
