@@ -130,16 +130,6 @@ struct Caster {
   std::function<std::optional<double>()> kept_pairs = [] { return std::optional<double>(); };
 };
 
-std::vector<rt::CastRay> castRays(const rt::IvmTriangleSet& set,
-                                  const std::vector<scene::Ray>& rays) {
-  std::vector<rt::CastRay> cast(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    cast[i].origin = rt::ivmRayOrigin(set, rays[i].origin);
-    cast[i].direction = rays[i].direction;
-  }
-  return cast;
-}
-
 // Median and quartiles of `repeats` timed calls after one untimed warm-up.
 metrics::TimingSummary timeRepeats(int repeats, const std::function<void()>& once) {
   once();
@@ -295,7 +285,7 @@ int runRaycastBench(RaycastBenchOptions& o) {
         row.bytes = embree.bytes();
         record(row, nullptr);
       }
-      const std::vector<rt::CastRay> cast_rays = castRays(instance.triangles, rays);
+      const std::vector<rt::CastRay> cast_rays = rt::castRaysOf(instance.triangles, rays);
       for (std::size_t s = 0; s < casters.size(); ++s) {
         Caster& gpu = casters[s];
         reports::RaycastStructureRow row;

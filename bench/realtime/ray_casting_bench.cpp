@@ -34,15 +34,8 @@ struct Fixture {
   Fixture() {
     const std::unique_ptr<scene::RayCaster> caster = ref::embreeRayCasterFactory()(scene);
     int k = 0;
-    for (RayKind kind : {RayKind::kPrimary, RayKind::kDiffuse}) {
-      for (const scene::Ray& r : makeRaySet(scene, kind, kSide, kSide, 1, *caster)) {
-        CastRay c;
-        c.origin = ivmRayOrigin(set, r.origin);
-        c.direction = r.direction;
-        rays[k].push_back(c);
-      }
-      ++k;
-    }
+    for (RayKind kind : {RayKind::kPrimary, RayKind::kDiffuse})
+      rays[k++] = castRaysOf(set, makeRaySet(scene, kind, kSide, kSide, 1, *caster));
   }
 };
 

@@ -6,6 +6,15 @@
 
 namespace gib::rt {
 
+std::vector<CastRay> castRaysOf(const IvmTriangleSet& set, std::span<const scene::Ray> rays) {
+  std::vector<CastRay> cast(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    cast[i].origin = ivmRayOrigin(set, rays[i].origin);
+    cast[i].direction = rays[i].direction;
+  }
+  return cast;
+}
+
 RayCastPass::RayCastPass(const GpuRayStructure& structure)
     : structure_(&structure),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "realtime/ray_casting/cast_rays.comp.glsl"}},

@@ -4,10 +4,12 @@
 
 #include "realtime/gl/objects.h"
 #include "realtime/ray_casting/gpu_ray_structure.h"
+#include "scene/ray_caster.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <span>
 #include <vector>
 
 namespace gib::rt {
@@ -20,6 +22,9 @@ struct CastRay {
   float t_max = gpu::kRayInfinity;
 };
 static_assert(sizeof(CastRay) == 32);
+
+// World-space rays (their origins moved by −set.origin, their segments from 0 to ∞) as a batch.
+std::vector<CastRay> castRaysOf(const IvmTriangleSet& set, std::span<const scene::Ray> rays);
 
 class RayCastPass {
  public:

@@ -10,6 +10,7 @@
 #include "realtime/ray_casting/ray_cast_pass.h"
 #include "realtime/ray_casting/ray_structures.h"
 #include "scene/builtin_scenes.h"
+#include "support/cast_rays.h"
 #include "support/gl_test_context.h"
 
 #include <gtest/gtest.h>
@@ -49,28 +50,6 @@ float diagonal(const IvmTriangleSet& set) {
   return glm::length(set.bounds_max - set.bounds_min);
 }
 
-double uniform(std::uint64_t& state) {
-  state = splitMix64(state);
-  return double(state >> 11) * 0x1.0p-53;
-}
-
-// Seeded rays from uniform points of the scene's bounds in uniform directions (set coordinates).
-std::vector<CastRay> randomRays(const IvmTriangleSet& set, int count, std::uint64_t seed) {
-  std::vector<CastRay> rays;
-  std::uint64_t state = seed;
-  for (int i = 0; i < count; ++i) {
-    // Braces: evaluated in order, so the rays are the same on every compiler.
-    const glm::vec3 f{float(uniform(state)), float(uniform(state)), float(uniform(state))};
-    const double z = 2.0 * uniform(state) - 1.0, phi = 2.0 * std::numbers::pi * uniform(state);
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    CastRay ray;
-    ray.origin = set.bounds_min + f * (set.bounds_max - set.bounds_min);
-    ray.direction = glm::vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z));
-    rays.push_back(ray);
-  }
-  return rays;
-}
-
 // Rays along the six axis directions (the other two components exactly 0, so 1/d needs the
 // guard), from origins that lie exactly on box faces of the tree: every node's box bounds on
 // one axis, the ray running along that face.
@@ -80,14 +59,15 @@ std::vector<CastRay> faceRays(const IvmTriangleSet& set, const Bvh& bvh, int cou
   std::uint64_t state = seed;
   const std::size_t boxes = bvh.nodeCount() * 2;
   for (int i = 0; i < count; ++i) {
-    const std::size_t box = std::size_t(uniform(state) * double(boxes));
+    const std::size_t box = std::size_t(test::unitUniform(state) * double(boxes));
     // Box k of the array is texels 2k (minimum, reference) and 2k + 1 (maximum).
     if (std::bit_cast<std::uint32_t>(bvh.nodes[2 * box].w) == gpu::kBvhEmptyReference) continue;
     const glm::vec4& bound = bvh.nodes[2 * box + std::size_t(i % 2)];  // min or max corner
     const int face_axis = i % 3;
     const int along = (face_axis + 1 + (i / 3) % 2) % 3;
     // Braces: evaluated in order, so the rays are the same on every compiler.
-    const glm::vec3 f{float(uniform(state)), float(uniform(state)), float(uniform(state))};
+    const glm::vec3 f{float(test::unitUniform(state)), float(test::unitUniform(state)),
+                      float(test::unitUniform(state))};
     CastRay ray;
     ray.origin = set.bounds_min + f * (set.bounds_max - set.bounds_min);
     ray.origin[face_axis] = bound[face_axis];
@@ -98,19 +78,6 @@ std::vector<CastRay> faceRays(const IvmTriangleSet& set, const Bvh& bvh, int cou
   return rays;
 }
 
-bool sameHit(const gpu::RayCastHit& a, const gpu::RayCastHit& b, float tie) {
-  const bool hit_a = a.triangle != gpu::kNoRayTriangle, hit_b = b.triangle != gpu::kNoRayTriangle;
-  if (!hit_a || !hit_b) return hit_a == hit_b;
-  return std::abs(a.t - b.t) <= tie;
-}
-
-std::string describe(const CastRay& ray, const gpu::RayCastHit& hit) {
-  return "ray o=(" + std::to_string(ray.origin.x) + ", " + std::to_string(ray.origin.y) + ", " +
-         std::to_string(ray.origin.z) + ") d=(" + std::to_string(ray.direction.x) + ", " +
-         std::to_string(ray.direction.y) + ", " + std::to_string(ray.direction.z) + "): triangle " +
-         std::to_string(hit.triangle) + " t=" + std::to_string(hit.t);
-}
-
 // Every ray's expected and actual hits agree; the first disagreements are printed.
 template <typename Expected, typename Actual>
 void expectAgreement(const std::vector<CastRay>& rays, float tie, Expected expected,
@@ -118,9 +85,10 @@ void expectAgreement(const std::vector<CastRay>& rays, float tie, Expected expec
   int disagreements = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const gpu::RayCastHit e = expected(i), a = actual(i);
-    if (sameHit(e, a, tie)) continue;
+    if (test::sameCastHit(e, a, tie)) continue;
     if (++disagreements <= 5)
-      ADD_FAILURE() << "expected " << describe(rays[i], e) << ", got " << describe(rays[i], a);
+      ADD_FAILURE() << "expected " << test::describeCast(rays[i], e) << ", got "
+                    << test::describeCast(rays[i], a);
   }
   EXPECT_EQ(disagreements, 0) << "of " << rays.size() << " rays";
 }
@@ -223,7 +191,7 @@ TEST(BvhBuild, SplitsAtTheMedianWhereTheSahWouldExceedTheDepthBound) {
   TreeWalk walk{set, bvh};
   EXPECT_EQ(walk.walk(gpu::kBvhRootReference, 0).size(), set.size());
   EXPECT_EQ(walk.boxes_not_containing, 0u);
-  expectCpuAgreesWithBruteForce(set, bvh, randomRays(set, 500, 11));
+  expectCpuAgreesWithBruteForce(set, bvh, test::randomCastRays(set, 500, 11));
 }
 
 TEST(BvhBuild, RefusesSettingsOutsideTheirRanges) {
@@ -247,9 +215,9 @@ TEST(BvhBuild, RefusesSettingsOutsideTheirRanges) {
 TEST(BvhCast, FindsTheBruteForceHitOnRandomRays) {
   for (const IvmTriangleSet* set : {&scenes().cornell, &scenes().chamber}) {
     const Bvh bvh = buildBvh(*set);
-    expectCpuAgreesWithBruteForce(*set, bvh, randomRays(*set, 2000, 7));
+    expectCpuAgreesWithBruteForce(*set, bvh, test::randomCastRays(*set, 2000, 7));
     // Within a segment: t_min and t_max cut hits off as the brute force cuts them.
-    std::vector<CastRay> segments = randomRays(*set, 500, 8);
+    std::vector<CastRay> segments = test::randomCastRays(*set, 500, 8);
     for (CastRay& ray : segments) {
       ray.t_min = 0.1f * diagonal(*set);
       ray.t_max = 0.4f * diagonal(*set);
@@ -290,7 +258,7 @@ TEST(BvhCast, HitsAndMissesASceneOfOneTriangle) {
   const gpu::RayCastHit beside = castBvh(bvh, set, ivmRayOrigin(set, {0.8f, 0.8f, 1.0f}),
                                          {0.0f, 0.0f, -1.0f}, 0.0f, gpu::kRayInfinity);
   EXPECT_EQ(beside.triangle, gpu::kNoRayTriangle);
-  expectCpuAgreesWithBruteForce(set, bvh, randomRays(set, 200, 3));
+  expectCpuAgreesWithBruteForce(set, bvh, test::randomCastRays(set, 200, 3));
 }
 
 class BvhGpu : public test::GlTest {};
@@ -298,7 +266,7 @@ class BvhGpu : public test::GlTest {};
 TEST_F(BvhGpu, FindsTheCpuTraversalsHits) {
   for (const IvmTriangleSet* set : {&scenes().cornell, &scenes().chamber}) {
     const GpuBvh gpu_bvh(*set);
-    std::vector<CastRay> rays = randomRays(*set, 2000, 17);
+    std::vector<CastRay> rays = test::randomCastRays(*set, 2000, 17);
     const std::vector<CastRay> faces = faceRays(*set, gpu_bvh.bvh(), 500, 19);
     rays.insert(rays.end(), faces.begin(), faces.end());
     RayCastPass pass(gpu_bvh);

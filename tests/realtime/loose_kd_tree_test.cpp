@@ -9,6 +9,7 @@
 #include "realtime/ray_casting/ray_cast_pass.h"
 #include "realtime/ray_casting/ray_structures.h"
 #include "scene/builtin_scenes.h"
+#include "support/cast_rays.h"
 #include "support/gl_test_context.h"
 
 #include <gtest/gtest.h>
@@ -42,27 +43,6 @@ const Scenes& scenes() {
   return s;
 }
 
-double uniform(std::uint64_t& state) {
-  state = splitMix64(state);
-  return double(state >> 11) * 0x1.0p-53;
-}
-
-// Seeded rays from uniform points of the scene's bounds in uniform directions (set coordinates).
-std::vector<CastRay> randomRays(const IvmTriangleSet& set, int count, std::uint64_t seed) {
-  std::vector<CastRay> rays;
-  std::uint64_t state = seed;
-  for (int i = 0; i < count; ++i) {
-    const glm::vec3 f(float(uniform(state)), float(uniform(state)), float(uniform(state)));
-    const double z = 2.0 * uniform(state) - 1.0, phi = 2.0 * std::numbers::pi * uniform(state);
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    CastRay ray;
-    ray.origin = set.bounds_min + f * (set.bounds_max - set.bounds_min);
-    ray.direction = glm::vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z));
-    rays.push_back(ray);
-  }
-  return rays;
-}
-
 // A cut node's decoded planes and axis, for the walks below.
 struct DecodedCut {
   int axis;
@@ -88,12 +68,14 @@ std::vector<CastRay> axisRays(const IvmTriangleSet& set, const LooseKdTree& tree
   std::uint64_t state = seed;
   for (int i = 0; i < count; ++i) {
     CastRay ray;
-    const glm::vec3 f(float(uniform(state)), float(uniform(state)), float(uniform(state)));
+    // Braces: evaluated in order, so the rays are the same on every compiler.
+    const glm::vec3 f{float(test::unitUniform(state)), float(test::unitUniform(state)),
+                      float(test::unitUniform(state))};
     ray.origin = set.bounds_min + f * (set.bounds_max - set.bounds_min);
     ray.direction = directions[std::size_t(i) % directions.size()];
     if (i % 2 == 1 && !cuts.empty()) {
       // In a cut plane, moving parallel to it (the direction's component along the axis is 0).
-      const DecodedCut& cut = cuts[std::size_t(uniform(state) * double(cuts.size()))];
+      const DecodedCut& cut = cuts[std::size_t(test::unitUniform(state) * double(cuts.size()))];
       const float plane = (i / 2) % 2 == 0 ? cut.planes.x : cut.planes.y;
       if (std::isfinite(plane)) ray.origin[cut.axis] = plane;
       ray.direction[cut.axis] = 0.0f;
@@ -102,13 +84,6 @@ std::vector<CastRay> axisRays(const IvmTriangleSet& set, const LooseKdTree& tree
     rays.push_back(ray);
   }
   return rays;
-}
-
-// Whether two hits agree (the tie rule above).
-bool sameHit(const gpu::RayCastHit& a, const gpu::RayCastHit& b, float tie) {
-  if (a.triangle == b.triangle) return true;
-  if (a.triangle == gpu::kNoRayTriangle || b.triangle == gpu::kNoRayTriangle) return false;
-  return std::abs(a.t - b.t) <= tie;
 }
 
 void expectCpuAgreesWithBruteForce(const IvmTriangleSet& set, const LooseKdTree& tree,
@@ -120,7 +95,7 @@ void expectCpuAgreesWithBruteForce(const IvmTriangleSet& set, const LooseKdTree&
     const gpu::RayCastHit expected = castBruteForce(set, r.origin, r.direction, r.t_min, r.t_max);
     const gpu::RayCastHit got = castLooseKdTree(tree, set, r.origin, r.direction, r.t_min, r.t_max);
     if (expected.triangle != gpu::kNoRayTriangle) ++hits;
-    if (!sameHit(expected, got, tie) && ++disagreements <= 5)
+    if (!test::sameCastHit(expected, got, tie) && ++disagreements <= 5)
       ADD_FAILURE() << "ray " << i << ": brute force " << expected.triangle << " at t "
                     << expected.t << ", loose kd-tree " << got.triangle << " at t " << got.t;
   }
@@ -223,9 +198,9 @@ TEST(LooseKdTree, BuildsTheSameWordsEveryTime) {
 
 TEST(LooseKdTree, CpuTraversalFindsTheBruteForceHit) {
   expectCpuAgreesWithBruteForce(scenes().cornell, scenes().cornell_tree,
-                                randomRays(scenes().cornell, 2000, 1));
+                                test::randomCastRays(scenes().cornell, 2000, 1));
   expectCpuAgreesWithBruteForce(scenes().chamber, scenes().chamber_tree,
-                                randomRays(scenes().chamber, 2000, 2));
+                                test::randomCastRays(scenes().chamber, 2000, 2));
 }
 
 TEST(LooseKdTree, CpuTraversalFindsTheBruteForceHitAlongAxesAndInCutPlanes) {
@@ -245,7 +220,8 @@ TEST(LooseKdTree, OtherBlockSizesPackTheSameTree) {
     EXPECT_EQ(tree.cut_nodes, scenes().chamber_tree.cut_nodes);
     EXPECT_EQ(tree.triangle_order, scenes().chamber_tree.triangle_order);
     expectPartitionInsideCells(tree, scenes().chamber);
-    expectCpuAgreesWithBruteForce(scenes().chamber, tree, randomRays(scenes().chamber, 300, 5));
+    expectCpuAgreesWithBruteForce(scenes().chamber, tree,
+                                  test::randomCastRays(scenes().chamber, 300, 5));
   }
 }
 
@@ -257,7 +233,8 @@ TEST(LooseKdTree, KeepsLeavesWithinTheDepthBound) {
   const LooseKdTree tree = buildLooseKdTree(scenes().chamber, settings);
   EXPECT_LE(tree.max_depth, 8);
   expectPartitionInsideCells(tree, scenes().chamber);
-  expectCpuAgreesWithBruteForce(scenes().chamber, tree, randomRays(scenes().chamber, 300, 6));
+  expectCpuAgreesWithBruteForce(scenes().chamber, tree,
+                                test::randomCastRays(scenes().chamber, 300, 6));
   // 3 400 triangles cannot fit leaves of 255 within 3 levels.
   settings.max_depth = 3;
   EXPECT_THROW(buildLooseKdTree(scenes().chamber, settings), std::invalid_argument);
@@ -349,7 +326,7 @@ TEST_F(LooseKdTreeGpu, FindsTheCpuTraversalsHits) {
     const LooseKdTree& tree = gpu_tree.tree();
     EXPECT_EQ(gpu_tree.bytes(), tree.bytes() + packRayTriangles(*set, tree.triangle_order).size() *
                                                    sizeof(glm::vec4));
-    std::vector<CastRay> rays = randomRays(*set, 2000, 7);
+    std::vector<CastRay> rays = test::randomCastRays(*set, 2000, 7);
     const std::vector<CastRay> axes = axisRays(*set, tree, 500, 8);
     rays.insert(rays.end(), axes.begin(), axes.end());
     RayCastPass pass(gpu_tree);
@@ -363,7 +340,7 @@ TEST_F(LooseKdTreeGpu, FindsTheCpuTraversalsHits) {
       const CastRay& r = rays[i];
       const gpu::RayCastHit cpu =
           castLooseKdTree(tree, *set, r.origin, r.direction, r.t_min, r.t_max);
-      if (!sameHit(cpu, hits[i], tie) && ++disagreements <= 5)
+      if (!test::sameCastHit(cpu, hits[i], tie) && ++disagreements <= 5)
         ADD_FAILURE() << "ray " << i << ": CPU " << cpu.triangle << " at t " << cpu.t << ", GPU "
                       << hits[i].triangle << " at t " << hits[i].t;
     }

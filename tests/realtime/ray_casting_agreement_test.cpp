@@ -64,11 +64,7 @@ TEST_F(RayCastingAgreement, EveryStructureHitsWhatEmbreeHitsOnRaysThatStressTies
   const ref::EmbreeScene embree(scene);
   std::vector<scene::RayHit> reference(rays.size());
   embree.intersect(rays, reference, false);
-  std::vector<rt::CastRay> cast(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    cast[i].origin = rt::ivmRayOrigin(set, rays[i].origin);
-    cast[i].direction = rays[i].direction;
-  }
+  const std::vector<rt::CastRay> cast = rt::castRaysOf(set, rays);
   const double tie = rt::tieDistance(set);
   auto expectAgreement = [&](std::string_view name, const std::vector<rt::gpu::RayCastHit>& hits) {
     const rt::HitComparison c = rt::compareHits(scene, set, rays, reference, hits, tie);

@@ -17,23 +17,13 @@ namespace {
 
 class RayEngine : public test::GlTest {};
 
-std::vector<rt::CastRay> castRays(const rt::IvmTriangleSet& set,
-                                  const std::vector<scene::Ray>& rays) {
-  std::vector<rt::CastRay> cast(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    cast[i].origin = rt::ivmRayOrigin(set, rays[i].origin);
-    cast[i].direction = rays[i].direction;
-  }
-  return cast;
-}
-
 TEST_F(RayEngine, KeepsTheNearestHitOfEveryRayWithAndWithoutCones) {
   const scene::Scene scene = scene::loadScene("chamber", {"detail=1"});
   const rt::IvmTriangleSet set = rt::buildIvmTriangles(scene);
   const std::unique_ptr<scene::RayCaster> caster = ref::embreeRayCasterFactory()(scene);
   for (rt::RayKind kind : {rt::RayKind::kPrimary, rt::RayKind::kReflection}) {
     const std::vector<rt::CastRay> rays =
-        castRays(set, rt::makeRaySet(scene, kind, 40, 30, 1, *caster));
+        rt::castRaysOf(set, rt::makeRaySet(scene, kind, 40, 30, 1, *caster));
     for (bool cones : {false, true}) {
       rt::RayEngine engine(set, cones, 8);
       engine.setRays(rays, 40);
@@ -60,7 +50,7 @@ TEST_F(RayEngine, ConesEncloseTheirTilesRaysAndCullCoherentOnes) {
   for (rt::RayKind kind :
        {rt::RayKind::kPrimary, rt::RayKind::kReflection, rt::RayKind::kDiffuse}) {
     const std::vector<rt::CastRay> rays =
-        castRays(set, rt::makeRaySet(scene, kind, width, 48, 3, *caster));
+        rt::castRaysOf(set, rt::makeRaySet(scene, kind, width, 48, 3, *caster));
     rt::RayEngine engine(set, true, tile);
     engine.setRays(rays, width);
     engine.cast();
