@@ -96,6 +96,7 @@ void LightPathMapTechnique::prepare(const GpuScene& scene, int width, int height
   width_ = width;
   height_ = height;
   const int r = settings_.atlas_resolution;
+  dots_vertex_array_.emplace();
 
   // The atlas: its texels are the exit points.
   triangles_ = atlas::atlasTriangles(scene.scene());
@@ -374,7 +375,7 @@ std::vector<AuxiliaryImage> LightPathMapTechnique::auxiliaryImages() {
     entry_dots_program_.set("u_point_size", std::max(1.0f, std::round(float(width_) / 320.0f)));
     entry_position_.bind(gpu::kEntryPositionUnit);
     entry_normal_.bind(gpu::kEntryNormalUnit);
-    dots_vertex_array_.bind();
+    dots_vertex_array_->bind();
     gl::drawArrays(GL_POINTS, 0, GLsizei(entries_.size()));
   }
   images.push_back(

@@ -123,7 +123,9 @@ class LightPathMapTechnique final : public Technique {
   std::vector<glm::vec3> entry_irradiance_, cluster_weights_;
   gl::FullScreenPass combine_pass_, composite_pass_;
   gl::Program view_program_, entry_dots_program_;
-  gl::VertexArray dots_vertex_array_;  // attribute-less: the dots read the entry textures
+  // Attribute-less: the dots read the entry textures. Made in prepare, as every GL object is
+  // (TechniqueInfo::create does no GL work).
+  std::optional<gl::VertexArray> dots_vertex_array_;
 };
 
 TechniqueInfo lightPathMapTechniqueInfo();
