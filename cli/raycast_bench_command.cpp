@@ -179,9 +179,11 @@ int runRaycastBench(RaycastBenchOptions& o) {
                              : fmt::format("{} {}", o.scene, fmt::join(instance.set, " "));
     const std::string hash = scene::hashScene(instance.scene);
     const Clock::time_point embree_start = Clock::now();
-    const ref::EmbreeScene embree(instance.scene);
+    const auto embree_scene = std::make_shared<const ref::EmbreeScene>(instance.scene);
     const double embree_build_ms = millisecondsSince(embree_start);
-    const std::unique_ptr<scene::RayCaster> caster = ref::embreeRayCasterFactory()(instance.scene);
+    const ref::EmbreeScene& embree = *embree_scene;
+    // The primary hits that secondary rays leave from, through the same BVH.
+    const std::unique_ptr<scene::RayCaster> caster = ref::embreeRayCaster(embree_scene);
 
     // The GPU structures, built once per scene (CPU build and upload, finished).
     std::vector<Caster> casters;

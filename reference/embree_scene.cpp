@@ -210,29 +210,34 @@ namespace {
 
 class EmbreeRayCaster final : public scene::RayCaster {
  public:
-  explicit EmbreeRayCaster(const scene::Scene& scene) : embree_(scene) {}
+  explicit EmbreeRayCaster(std::shared_ptr<const EmbreeScene> embree)
+      : embree_(std::move(embree)) {}
   scene::RayHit intersect(const glm::vec3& origin, const glm::vec3& direction,
                           float t_near) const override {
-    return embree_.intersect(origin, direction, t_near);
+    return embree_->intersect(origin, direction, t_near);
   }
   void intersect(std::span<const scene::Ray> rays, std::span<scene::RayHit> hits,
                  bool coherent) const override {
-    embree_.intersect(rays, hits, coherent);
+    embree_->intersect(rays, hits, coherent);
   }
   void occluded(std::span<const scene::Ray> rays, std::span<std::uint8_t> blocked) const override {
-    embree_.occluded(rays, blocked);
+    embree_->occluded(rays, blocked);
   }
-  float rayEpsilon() const override { return embree_.rayEpsilon(); }
+  float rayEpsilon() const override { return embree_->rayEpsilon(); }
 
  private:
-  EmbreeScene embree_;
+  std::shared_ptr<const EmbreeScene> embree_;
 };
 
 }  // namespace
 
+std::unique_ptr<scene::RayCaster> embreeRayCaster(std::shared_ptr<const EmbreeScene> embree) {
+  return std::make_unique<EmbreeRayCaster>(std::move(embree));
+}
+
 scene::RayCasterFactory embreeRayCasterFactory() {
   return [](const scene::Scene& scene) -> std::unique_ptr<scene::RayCaster> {
-    return std::make_unique<EmbreeRayCaster>(scene);
+    return embreeRayCaster(std::make_shared<const EmbreeScene>(scene));
   };
 }
 

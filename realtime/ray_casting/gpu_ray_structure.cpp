@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <numeric>
 #include <stdexcept>
 
 namespace gib::rt {
@@ -27,15 +28,14 @@ void GpuRayTriangles::bind() const {
   texture_.bind(GLuint(gpu::kRayTrianglesUnit));
 }
 
-namespace {
-std::vector<std::uint32_t> listOrder(std::size_t count) {
-  std::vector<std::uint32_t> order(count);
-  for (std::size_t i = 0; i < count; ++i) order[i] = std::uint32_t(i);
-  return order;
-}
-}  // namespace
+GpuRayTriangles::GpuRayTriangles(const IvmTriangleSet& set)
+    : GpuRayTriangles(set, [&] {
+        std::vector<std::uint32_t> order(set.size());
+        std::iota(order.begin(), order.end(), 0u);
+        return order;
+      }()) {}
 
-GpuBruteForce::GpuBruteForce(const IvmTriangleSet& set) : triangles_(set, listOrder(set.size())) {}
+GpuBruteForce::GpuBruteForce(const IvmTriangleSet& set) : triangles_(set) {}
 
 void checkRayCastingLimits(std::size_t texels) {
   GLint units = 0, buffer_texels = 0;

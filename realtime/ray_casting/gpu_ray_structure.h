@@ -39,6 +39,8 @@ class GpuRayTriangles {
  public:
   GpuRayTriangles() = default;
   GpuRayTriangles(const IvmTriangleSet& set, std::span<const std::uint32_t> order);
+  // In the set's own order (the brute force's and the ray engine's: slot = list index).
+  explicit GpuRayTriangles(const IvmTriangleSet& set);
   void bind() const;
   std::size_t bytes() const { return buffer_.bytes(); }
 

@@ -15,12 +15,6 @@ namespace gib::rt {
 
 namespace {
 
-std::vector<std::uint32_t> listOrder(std::size_t count) {
-  std::vector<std::uint32_t> order(count);
-  for (std::size_t i = 0; i < count; ++i) order[i] = std::uint32_t(i);
-  return order;
-}
-
 // Each triangle's bounding sphere (centre: its bounding box's centre; radius: the farthest
 // vertex), in list order, the set's coordinates.
 std::vector<glm::vec4> triangleSpheres(const IvmTriangleSet& set) {
@@ -44,7 +38,7 @@ RayEngine::RayEngine(const IvmTriangleSet& set, bool cones, int tile_size)
       tile_size_(tile_size),
       depth_scale_(std::max(1e-6f, glm::length(set.bounds_max - set.bounds_min))),
       triangle_count_(set.size()),
-      triangles_(set, listOrder(set.size())) {
+      triangles_(set) {
   GLfloat point_range[2] = {0, 0};
   glGetFloatv(GL_POINT_SIZE_RANGE, point_range);
   if (cones_ && (tile_size_ < 1 || float(tile_size_) > point_range[1]))

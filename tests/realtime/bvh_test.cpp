@@ -238,7 +238,7 @@ TEST(BvhCast, FindsTheBruteForceHitAlongAxesAndBoxFaces) {
 TEST(BvhCast, HitsAndMissesASceneOfOneTriangle) {
   scene::Scene one;
   scene::Mesh mesh;
-  // Tilted: a triangle in an axis plane gives a flat scene whose IVM origin lies in its plane.
+  // Tilted, so that its bounds have depth along every axis.
   mesh.positions = {{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.5f}, {0.0f, 1.0f, 0.25f}};
   mesh.triangles = {{0u, 1u, 2u}};
   one.meshes.push_back(mesh);

@@ -240,9 +240,8 @@ TEST(LooseKdTree, KeepsLeavesWithinTheDepthBound) {
   EXPECT_THROW(buildLooseKdTree(scenes().chamber, settings), std::invalid_argument);
 }
 
-// A triangle tilted out of every coordinate plane. (A triangle in z = 0 alone has bounds of no
-// thickness, so every candidate origin of buildIvmTriangles lies in its plane, where it has no
-// IVM.) The ray from (0.25, 0.25, 1) straight down meets it at z = 0.125, t = 0.875.
+// A triangle tilted out of every coordinate plane, so that its bounds have depth along every axis.
+// The ray from (0.25, 0.25, 1) straight down meets it at z = 0.125, t = 0.875.
 std::vector<glm::vec3> tiltedTriangle() {
   return {{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.3f}, {0.0f, 1.0f, 0.2f}};
 }
