@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
+#include "realtime/techniques/distance_map_specular/distance_map_specular_technique.h"
 #include "realtime/techniques/gpu_ray_tracing/gpu_ray_tracing_technique.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
 #include "realtime/techniques/illumination_network/illumination_network_technique.h"
@@ -36,7 +37,8 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        sphericalBillboardsTechniqueInfo(),
                                                        illuminationNetworkTechniqueInfo(),
                                                        obscurancesTechniqueInfo(),
-                                                       gpuRayTracingTechniqueInfo()};
+                                                       gpuRayTracingTechniqueInfo(),
+                                                       distanceMapSpecularTechniqueInfo()};
   return catalogue;
 }
 

@@ -107,6 +107,9 @@ class Technique {
   // Counts that figures are drawn against (vertices drawn, texels, grid points), recorded in the
   // job's results. Called after prepare().
   virtual std::vector<TechniqueStatistic> statistics() const { return {}; }
+  // Counts measured on the last frame (a search's mean error against Embree), recorded with
+  // statistics(). Called after auxiliaryImages(); declared in TechniqueInfo::statistics alike.
+  virtual std::vector<TechniqueStatistic> finalStatistics() const { return {}; }
 };
 
 // What a technique needs besides a GPU scene. The runner checks every need once, before the

@@ -145,6 +145,9 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
     result.auxiliary = technique->auxiliaryImages();
     checkOutputsDeclared(info, result.auxiliary, info.auxiliary_images, "auxiliary image",
                          "auxiliary_images");
+    const std::vector<TechniqueStatistic> measured = technique->finalStatistics();
+    checkOutputsDeclared(info, measured, info.statistics, "statistic", "statistics");
+    result.statistics.insert(result.statistics.end(), measured.begin(), measured.end());
     result.path_class = technique->pathClass();
     result.obscurance = technique->imageObscurance();
     if (settings.capture_primary_surfaces) {

@@ -88,7 +88,9 @@ void GBuffer::renderViews(const GpuScene& scene, const std::vector<GBufferView>&
     for (std::size_t i = 0; i < std::size_t(gpu::kMaxGBufferViewsPerDraw); ++i) {
       const std::size_t v = d * gpu::kMaxGBufferViewsPerDraw + i;
       if (v >= views.size()) break;
-      const gpu::GBufferViewRecord record{views[v].view_projection, glm::vec4(views[v].eye, 1.0f)};
+      const gpu::GBufferViewRecord record{
+          views[v].view_projection, glm::vec4(views[v].eye, 1.0f),
+          glm::ivec4(views[v].excluded_first, views[v].excluded_end, 0, 0)};
       std::memcpy(blocks.data() + d * stride + i * sizeof(record), &record, sizeof(record));
       scene.appendViewRecords(views[v].view_projection, GLuint(i), cull_views_, records);
     }

@@ -26,6 +26,9 @@ struct GBufferView {
   glm::mat4 view_projection{1.0f};
   glm::vec3 eye{0.0f};
   int x = 0, y = 0, width = 0, height = 0;  // viewport in texels
+  // Triangles [first, end) of the scene's list (GpuScene's order: meshes in order) left out of
+  // this view: a distance map does not see the object it belongs to.
+  int excluded_first = 0, excluded_end = 0;
 };
 
 // The pass GBuffer::render opens when given a profiler.
@@ -46,7 +49,11 @@ class GBuffer {
   const gl::Texture& position() const { return position_; }  // world position, w: ray distance
   // Unit shading normal (the geometric one on a flat mesh, shading_normal.glsl), w: material.
   const gl::Texture& normal() const { return normal_; }
-  const gl::Texture& albedo() const { return albedo_; }  // material diffuse RGB, w: 1
+  // Material diffuse RGB; w: ±(t + 1) for the scene triangle t seen (GpuScene's list), + where
+  // the eye is on its front side: a distance map's texels tell their object and an emitter's
+  // side by it (a probe view's normal is turned to its eye), the specular pass its pixel's
+  // object. Background: 0.
+  const gl::Texture& albedo() const { return albedo_; }
   // Binds position and normal, what deferred passes read (gbuffer_maps.glsl), to their units of
   // gl/binding_plan_shared.h.
   void bindTextures() const;

@@ -18,10 +18,14 @@ layout(std140, binding = kGBufferViewsBinding) uniform GBufferViewBlock {
 #define world_shading_normal g_world_shading_normal
 #define material g_material
 #define view_eye g_view_eye
+#define scene_triangle g_scene_triangle
 flat out int g_viewport;
 #endif
 flat out vec3 view_eye;
 #endif
+// The triangle's index in the scene's list: its triangles are flat and in list order, and a
+// draw's (or a multi-draw record's) gl_VertexID counts from its first vertex.
+flat out int scene_triangle;
 
 out vec3 world_position;
 flat out vec3 world_normal;
@@ -33,10 +37,15 @@ void main() {
   world_normal = vertex_normal;
   world_shading_normal = vertex_shading_normal;
   material = vertex_material;
+  scene_triangle = gl_VertexID / 3;
 #ifdef EXPLICIT_VIEW
   int view = int(vertex_instance);
   view_eye = u_views[view].eye.xyz;
-  gl_Position = u_views[view].view_projection * vec4(vertex_position, 1.0);
+  ivec2 excluded = u_views[view].excluded_triangles.xy;
+  if (scene_triangle >= excluded.x && scene_triangle < excluded.y)
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // all three corners beyond x = w: clipped whole
+  else
+    gl_Position = u_views[view].view_projection * vec4(vertex_position, 1.0);
 #ifdef VIEWPORT_FROM_VERTEX_SHADER
   gl_ViewportIndex = view;
 #else

@@ -8,11 +8,13 @@ in vec3 g_world_shading_normal[];
 flat in uint g_material[];
 flat in vec3 g_view_eye[];
 flat in int g_viewport[];
+flat in int g_scene_triangle[];
 out vec3 world_position;
 flat out vec3 world_normal;
 out vec3 world_shading_normal;
 flat out uint material;
 flat out vec3 view_eye;
+flat out int scene_triangle;
 
 void main() {
   for (int i = 0; i < 3; ++i) {
@@ -23,6 +25,7 @@ void main() {
     world_shading_normal = g_world_shading_normal[i];
     material = g_material[i];
     view_eye = g_view_eye[i];
+    scene_triangle = g_scene_triangle[i];
     EmitVertex();
   }
   EndPrimitive();

@@ -12,12 +12,15 @@ namespace gib::rt::gpu {
 struct GBufferViewRecord {
   mat4 view_projection;  // world to the view's clip space
   vec4 eye;              // xyz the view's eye
+  // Triangles [x, y) of the scene's list are not drawn into this view (a distance map leaves
+  // out the object it belongs to, book §6.1); x == y: every triangle is.
+  ivec4 excluded_triangles;
 };
 
 // Views per draw: the viewports every GL 4.5 implementation offers (GL_MAX_VIEWPORTS ≥ 16).
 const int kMaxGBufferViewsPerDraw = 16;
 
 #ifdef __cplusplus
-static_assert(sizeof(GBufferViewRecord) == 80, "std140: a mat4 and a vec4");
+static_assert(sizeof(GBufferViewRecord) == 96, "std140: a mat4 and two vec4s");
 }  // namespace gib::rt::gpu
 #endif

@@ -28,6 +28,12 @@ const int kPeelPreviousDepthUnit = 14;  // depth_peeling/: the depth of the laye
 const int kRayTrianglesUnit = 15;  // the triangles' IVMs and apexes, then the slots' indices
 const int kRayNodesUnit = 16;      // the structure's nodes
 const int kRayFlagsUnit = 17;      // the loose kd-tree's node flags
+// distance_map/: the distance maps (a cube-map array: rgb radiance, a distance from the
+// reference point; distance_map_shared.h) and, while they are composed, their views' light and
+// triangle codes (GBuffer::albedo's w).
+const int kDistanceMapUnit = 18;
+const int kDistanceMapLightUnit = 19;
+const int kDistanceMapCodeUnit = 20;
 
 // Image units of compute passes (one program at a time reads one image and writes another, or
 // several: units kImageDestinationUnit and up, at most 4 of them, GL 4.5 offering 8).
@@ -44,6 +50,7 @@ const int kCameraBinding = 0;                 // gpu_scene/: the camera block
 const int kLightSamplesBinding = 1;           // lighting/: the current batch of light samples
 const int kShadowFacesBinding = 2;            // lighting/: the layers a batch's shadow pass draws
 const int kGBufferViewsBinding = 3;           // gbuffer/: the views of one instanced G-buffer draw
+const int kDistanceMapObjectsBinding = 6;     // distance_map/: the maps' objects and settings
 const int kTechniqueFirstUniformBinding = 4;  // 4, 5: a technique's own blocks
 const int kTechniqueUniformBindingCount = 2;
 

@@ -255,6 +255,8 @@ TEST_F(SharedHeaders, UniformBlocksHaveTheCppLayoutInTheDriver) {
   using gpu::GBufferViewRecord;
   EXPECT_EQ(offset("views[1].view_projection"), sizeof(GBufferViewRecord));
   EXPECT_EQ(offset("views[1].eye"), sizeof(GBufferViewRecord) + offsetof(GBufferViewRecord, eye));
+  EXPECT_EQ(offset("views[1].excluded_triangles"),
+            sizeof(GBufferViewRecord) + offsetof(GBufferViewRecord, excluded_triangles));
 }
 
 // The irradiance cache's records (std430 storage): the gradients' arrays where C++ puts them.
