@@ -39,6 +39,12 @@ const std::vector<BuiltinScene>& registry() {
         "sky) after Szirmay-Kalos et al. Fig. 9.21",
         cloudParameters()},
        &makeCloud},
+      {{"room",
+        "cubic room of red, green, blue and yellow walls lit by four fire balls, with a diffuse or "
+        "glossy sphere or torus (the last mesh) in place of the book's skull, bunny, Buddha and "
+        "dragon, after Szirmay-Kalos et al. §7.3, Figs. 7.10-7.13",
+        roomParameters()},
+       &makeRoom},
   };
   return scenes;
 }

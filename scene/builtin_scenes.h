@@ -33,5 +33,7 @@ Scene makeChamber(const ParameterValues& parameters);
 ParameterTable chamberParameters();
 Scene makeCloud(const ParameterValues& parameters);
 ParameterTable cloudParameters();
+Scene makeRoom(const ParameterValues& parameters);
+ParameterTable roomParameters();
 
 }  // namespace gib::scene

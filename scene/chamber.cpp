@@ -12,11 +12,15 @@
 #include "common/input_error.h"
 #include "scene/builtin_scenes.h"
 #include "scene/chamber_geometry.h"
+#include "scene/mesh_builder.h"
+#include "scene/metals.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 #include <string>
@@ -196,6 +200,69 @@ void addArcades(Scene& scene, const Materials& m, int d) {
   addMeshes(scene, {&plinths, &shafts, &capitals, &responds, &arcade_walls, &soffits});
 }
 
+// specular=objects: specular objects standing on the nave's floor for the distance-map
+// reflections and refractions of the book's §6.2 (Figs. 6.9 and 6.11). An aluminium torus stands
+// in for the aluminium teapot (2 300 triangles there, 2 304 here) and a glass sphere of index 1.3
+// for the glass skull of Fig. 6.9; a thin glass pane and a thin mirror panel are the thin objects
+// whose reflections show the linear search's missed spikes (Fig. 6.11). All stand in the
+// spot-lit middle of the nave (the spot reaches the floor around (0.4, 0, 7.5)), inside the
+// default view (which sees the floor from z ≈ 4 on), clear of each other and at least 0.3 m
+// inside the plinths' faces (x = ±2.1). Each is its own mesh and material; every one is closed,
+// the glass ones facing outwards as glass must. They float 5 mm above the floor, so that no
+// triangle touches or cuts it.
+constexpr float kLift = 0.005f;
+constexpr float kSkullRadius = 0.4f;
+constexpr glm::vec3 kSkullCentre{-0.4f, kSkullRadius + kLift, 6.0f};
+constexpr float kSkullIor = 1.3f;
+constexpr int kSkullRings = 32, kSkullSegments = 64;
+// Upright, on its rim, the ring turned 45° from the view so that its hole and both curvatures show.
+constexpr float kTeapotMajorRadius = 0.45f, kTeapotMinorRadius = 0.15f;
+constexpr glm::vec3 kTeapotCentre{1.1f, kTeapotMajorRadius + kTeapotMinorRadius + kLift, 7.0f};
+constexpr glm::vec3 kTeapotAxis{1.0f, 0.0f, -1.0f};
+constexpr int kTeapotRings = 48, kTeapotSegments = 24;
+// The pane: 1.0 m wide, 1.2 m high, 4 cm thick, turned 30° about the vertical; the mirror panel:
+// 1.0 × 1.4 m, 2 cm thick, turned −40°, facing the middle of the nave.
+constexpr float kPaneHalfWidth = 0.5f, kPaneHalfHeight = 0.6f, kPaneHalfThickness = 0.02f;
+constexpr glm::vec3 kPaneCentre{-1.3f, kPaneHalfHeight + kLift, 8.5f};
+constexpr float kPaneYawDeg = 30.0f;
+constexpr float kPanelHalfWidth = 0.5f, kPanelHalfHeight = 0.7f, kPanelHalfThickness = 0.01f;
+constexpr glm::vec3 kPanelCentre{1.4f, kPanelHalfHeight + kLift, 9.8f};
+constexpr float kPanelYawDeg = -40.0f;
+
+// An upright slab turned `yaw_deg` about the vertical: its width along (cos yaw, 0, sin yaw).
+void appendUprightSlab(Mesh& mesh, glm::vec3 centre, float half_width, float half_height,
+                       float half_thickness, float yaw_deg) {
+  const float yaw = glm::radians(yaw_deg);
+  const glm::vec3 across(std::cos(yaw), 0.0f, std::sin(yaw));
+  const glm::vec3 through(-across.z, 0.0f, across.x);
+  appendParallelepiped(mesh, centre, half_width * across, {0.0f, half_height, 0.0f},
+                       half_thickness * through);
+}
+
+Material glassMaterial(std::string name, float ior) {
+  Material glass;
+  glass.name = std::move(name);
+  glass.type = MaterialType::kGlass;
+  glass.ior = ior;
+  return glass;
+}
+
+void addSpecularObjects(Scene& scene) {
+  const Metal& aluminium = *findMetal("aluminium");
+  appendTorus(addMeshOfMaterial(scene, "aluminium_torus", mirrorMaterial("aluminium", aluminium)),
+              kTeapotCentre, kTeapotAxis, kTeapotMajorRadius, kTeapotMinorRadius, kTeapotRings,
+              kTeapotSegments);
+  appendSphere(addMeshOfMaterial(scene, "glass_sphere", glassMaterial("glass_1.3", kSkullIor)),
+               kSkullCentre, kSkullRadius, kSkullRings, kSkullSegments, /*inward=*/false,
+               SphereShading::kSmooth);
+  appendUprightSlab(addMeshOfMaterial(scene, "glass_pane", glassMaterial("pane_glass", 1.5f)),
+                    kPaneCentre, kPaneHalfWidth, kPaneHalfHeight, kPaneHalfThickness, kPaneYawDeg);
+  appendUprightSlab(addMeshOfMaterial(scene, "mirror_panel",
+                                      mirrorMaterial("panel_silver", *findMetal("silver"))),
+                    kPanelCentre, kPanelHalfWidth, kPanelHalfHeight, kPanelHalfThickness,
+                    kPanelYawDeg);
+}
+
 glm::vec3 toVec3(const std::vector<double>& v) {
   return {float(v[0]), float(v[1]), float(v[2])};
 }
@@ -215,6 +282,10 @@ ParameterTable chamberParameters() {
                        "point the spot light aims at (on the floor, y = 0, by default)"),
       numericParameter("light_intensity", ParameterType::kNumber, "500", 0, 1e6, "W/sr",
                        "spot light intensity on its axis (white)"),
+      choiceParameter("specular", "none", {"none", "objects"},
+                      "specular objects on the nave's floor (book Figs. 6.9 and 6.11): an "
+                      "aluminium torus for the teapot, a glass sphere of index 1.3 for the skull, "
+                      "a thin glass pane and a thin silver mirror panel"),
   };
 }
 
@@ -231,6 +302,7 @@ Scene makeChamber(const ParameterValues& parameters) {
   const Materials materials = addMaterials(scene);
   addShell(scene, materials, d);
   addArcades(scene, materials, d);
+  if (parameters.text("specular") == "objects") addSpecularObjects(scene);
 
   // The spot light, hung under the crown of the vault. Its default (500 W/sr from 7.7 m, reaching
   // the floor at 31° from the normal) gives the middle of the lit floor a diffuse radiance of

@@ -4,12 +4,15 @@
 // cornell_spectra.cpp) converted to linear Rec.709 by spectrum.cpp; and its variants with a
 // mirror and a glass sphere in place of the blocks, and with a spot light in place of the area
 // light (docs/scenes.md).
+#include "common/input_error.h"
 #include "scene/builtin_scenes.h"
 #include "scene/cornell_spectra.h"
 #include "scene/mesh_builder.h"
 #include "scene/metals.h"
 #include "scene/spectrum.h"
 
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
@@ -29,15 +32,21 @@ constexpr float kLightY = 548.8f - 0.1f;
 constexpr float kLightArea = 130.0f * 105.0f;
 
 // The spheres of the classic "Cornell box with spheres" (the book's colour box, Figs. 6.2 and
-// 6.6): a mirror sphere at the back on the red wall's side and a glass sphere at the front on the
-// green wall's side, both of radius 100 mm standing on the floor. Both lie wholly in the camera's
-// view and clear of the walls (the mirror 70 mm from the red wall and 79 mm from the back wall,
-// the glass 85 mm from the green wall and 70 mm behind the opening), and the glass sphere's
-// caustic under the ceiling light falls on the floor in front of it, about 80 % of it in view
-// (rays traced from the light's centre through the sphere, ior 1.5).
+// 6.6): by default a mirror sphere at the back on the red wall's side and a glass sphere at the
+// front on the green wall's side, both of radius 100 mm standing on the floor. Both lie wholly in
+// the camera's view and clear of the walls (the mirror 70 mm from the red wall and 79 mm from the
+// back wall, the glass 85 mm from the green wall and 70 mm behind the opening), and the glass
+// sphere's caustic under the ceiling light falls on the floor in front of it, about 80 % of it in
+// view (rays traced from the light's centre through the sphere, ior 1.5). `mirror_centre` (default
+// (380, 100, 380), the position above) moves the mirror sphere, near a wall say, where environment
+// mapping's reflections go most wrong (Fig. 6.6).
 constexpr float kSphereRadius = 100.0f;
-constexpr glm::vec3 kMirrorCentre{380.0f, kSphereRadius, 380.0f};
 constexpr glm::vec3 kGlassCentre{185.0f, kSphereRadius, 170.0f};
+// The centres that keep the mirror sphere inside the box: on or above the floor, under the light
+// (y + r ≤ 548.7), inside the right (x = 0) and back (z = 559.2) walls and the opening (z = 0), and
+// inside the left wall, which leans in to x = 549.6 at the back of the floor. Whole millimetres.
+constexpr glm::vec3 kMirrorCentreMin{100.0f, 100.0f, 100.0f};
+constexpr glm::vec3 kMirrorCentreMax{449.0f, 448.0f, 459.0f};
 // Fine enough that the facets' silhouette deviates from the sphere by r·(1 − cos(π/128)), 0.03 mm,
 // under a tenth of a pixel at the default 512².
 constexpr int kSphereRings = 64;
@@ -69,19 +78,39 @@ void addBlock(Mesh& mesh, const glm::vec3 (&quads)[5][4]) {
   for (const auto& q : quads) appendQuad(mesh, q[0], q[1], q[2], q[3]);
 }
 
+// The mirror sphere's centre, `mirror_centre`, checked against the box and the glass sphere.
+glm::vec3 mirrorCentre(const ParameterValues& parameters, bool with_glass) {
+  const std::vector<double> v = parameters.vector3("mirror_centre");
+  const glm::vec3 centre{float(v[0]), float(v[1]), float(v[2])};
+  const char* axes = "xyz";
+  for (int i = 0; i < 3; ++i)
+    if (centre[i] < kMirrorCentreMin[i] || centre[i] > kMirrorCentreMax[i])
+      throw InputError(fmt::format(
+          "scene 'cornell' parameter mirror_centre = '{}' puts the mirror sphere (radius {} mm) "
+          "outside the box; give x in [{}, {}], y in [{}, {}], z in [{}, {}] mm ({} is {})",
+          parameters.text("mirror_centre"), kSphereRadius, kMirrorCentreMin.x, kMirrorCentreMax.x,
+          kMirrorCentreMin.y, kMirrorCentreMax.y, kMirrorCentreMin.z, kMirrorCentreMax.z, axes[i],
+          centre[i]));
+  if (with_glass && glm::distance(centre, kGlassCentre) < 2.0f * kSphereRadius)
+    throw InputError(fmt::format(
+        "scene 'cornell' parameter mirror_centre = '{}' puts the mirror sphere into the glass "
+        "sphere at ({}, {}, {}) mm; keep the centres at least {} mm apart, or use spheres=mirror",
+        parameters.text("mirror_centre"), kGlassCentre.x, kGlassCentre.y, kGlassCentre.z,
+        2.0f * kSphereRadius));
+  return centre;
+}
+
 // The spheres that `spheres` asks for, smooth-shaded.
 void addSpheres(Scene& scene, const ParameterValues& parameters) {
   const std::string& spheres = parameters.text("spheres");
   auto addSphere = [&](std::string name, Material material, glm::vec3 centre) {
-    scene.materials.push_back(std::move(material));
-    Mesh& mesh =
-        addMesh(scene, std::move(name), static_cast<std::uint32_t>(scene.materials.size() - 1));
-    appendSphere(mesh, centre, kSphereRadius, kSphereRings, kSphereSegments, /*inward=*/false,
+    appendSphere(addMeshOfMaterial(scene, std::move(name), std::move(material)), centre,
+                 kSphereRadius, kSphereRings, kSphereSegments, /*inward=*/false,
                  SphereShading::kSmooth);
   };
   if (spheres == "mirror" || spheres == "mirror_glass")
     addSphere("mirror_sphere", mirrorMaterial("mirror", *findMetal(parameters.text("metal"))),
-              kMirrorCentre);
+              mirrorCentre(parameters, spheres == "mirror_glass"));
   if (spheres == "glass" || spheres == "mirror_glass") {
     Material glass;
     glass.name = "glass";
@@ -104,6 +133,11 @@ ParameterTable cornellParameters() {
       choiceParameter("spheres", "none", {"none", "mirror", "glass", "mirror_glass"},
                       "a mirror sphere (back, red side) and/or a glass sphere (front, green "
                       "side), radius 100 mm, on the floor in place of the blocks"),
+      numericParameter("mirror_centre", ParameterType::kVector3, "380,100,380", 100, 459, "mm",
+                       "the mirror sphere's centre (spheres=mirror|mirror_glass; Fig. 6.6 moves "
+                       "it near a wall): x in [100, 449], y in [100, 448], z in [100, 459], so "
+                       "that it stays in the box, on or above the floor, and 200 mm or more from "
+                       "the glass sphere's centre (185, 100, 170)"),
       choiceParameter("metal", "silver", metalNames(),
                       "the mirror sphere's metal (docs/scenes.md, \"Metals\"; perfect: R = 1)"),
       numericParameter("ior", ParameterType::kNumber, "1.5", kMinGlassIor, kMaxGlassIor, "",

@@ -32,13 +32,9 @@ void addObject(Scene& scene, const std::string& object) {
     material.type = MaterialType::kGlass;
     material.ior = 1.5f;
   }
-  scene.materials.push_back(std::move(material));
-  Mesh mesh;
-  mesh.name = object + "_sphere";
-  mesh.material = static_cast<std::uint32_t>(scene.materials.size() - 1);
-  appendSphere(mesh, kObjectCentre, kObjectRadius, kObjectRings, kObjectSegments,
-               /*inward=*/false, SphereShading::kSmooth);
-  scene.meshes.push_back(std::move(mesh));
+  appendSphere(addMeshOfMaterial(scene, object + "_sphere", std::move(material)), kObjectCentre,
+               kObjectRadius, kObjectRings, kObjectSegments, /*inward=*/false,
+               SphereShading::kSmooth);
 }
 
 }  // namespace

@@ -159,6 +159,55 @@ TEST(CornellBox, SphereParametersReachTheMaterials) {
   EXPECT_NE(hashScene(glass), hashScene(loadScene("cornell", {"spheres=glass"})));
 }
 
+TEST(CornellBox, MirrorCentreMovesTheMirrorSphere) {
+  // The default is the classic position: the same scene, the same hash.
+  const Scene classic = loadScene("cornell", {"spheres=mirror_glass"});
+  EXPECT_EQ(hashScene(classic),
+            hashScene(loadScene("cornell", {"spheres=mirror_glass", "mirror_centre=380,100,380"})));
+  EXPECT_EQ(sphereOf(*findMesh(classic, "mirror_sphere")).first, glm::vec3(380, 100, 380));
+  // Near the red wall and the back wall, as in Fig. 6.6, and at the corners of the allowed range.
+  for (const char* centre : {"449,100,459", "100,448,100", "449,300,200"}) {
+    const Scene moved =
+        loadScene("cornell", {"spheres=mirror_glass", std::string("mirror_centre=") + centre});
+    const Mesh& mirror = *findMesh(moved, "mirror_sphere");
+    const auto [c, radius] = sphereOf(mirror);
+    EXPECT_NE(hashScene(moved), hashScene(classic)) << centre;
+    EXPECT_NEAR(radius, 100.0f, 1e-3f) << centre;
+    // Inside the box: the left wall leans in to x = 549.6 at the floor's back, the light hangs at
+    // y = 548.7.
+    EXPECT_GE(c.y - radius, -1e-3f) << centre;
+    EXPECT_LE(c.y + radius, 548.7f) << centre;
+    EXPECT_GE(c.x - radius, 0.0f) << centre;
+    EXPECT_LE(c.x + radius, 549.6f) << centre;
+    EXPECT_GE(c.z - radius, 0.0f) << centre;
+    EXPECT_LE(c.z + radius, 559.2f) << centre;
+    // The glass sphere stays where it was.
+    EXPECT_EQ(findMesh(moved, "glass_sphere")->positions,
+              findMesh(classic, "glass_sphere")->positions);
+  }
+  // Without a mirror sphere the parameter changes nothing.
+  EXPECT_EQ(hashScene(loadScene("cornell", {"spheres=glass", "mirror_centre=200,200,200"})),
+            hashScene(loadScene("cornell", {"spheres=glass"})));
+}
+
+TEST(CornellBox, MirrorCentreOutsideTheBoxIsAnInputError) {
+  for (const char* centre : {"380,99,380", "380,50,380", "450,100,380", "380,449,380",
+                             "380,100,460", "99,100,380", "380,100,-100", "380,100", "nan,100,380"})
+    EXPECT_THROW(loadScene("cornell", {"spheres=mirror", std::string("mirror_centre=") + centre}),
+                 InputError)
+        << centre;
+  // Into the glass sphere (centre (185, 100, 170)), with both spheres only.
+  EXPECT_THROW(loadScene("cornell", {"spheres=mirror_glass", "mirror_centre=250,100,250"}),
+               InputError);
+  EXPECT_NO_THROW(loadScene("cornell", {"spheres=mirror", "mirror_centre=250,100,250"}));
+  try {
+    loadScene("cornell", {"spheres=mirror", "mirror_centre=450,100,380"});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("give x in [100, 449]"), std::string::npos) << e.what();
+  }
+}
+
 TEST(CornellBox, BadSphereParametersAreInputErrors) {
   for (const std::vector<std::string>& bad :
        std::vector<std::vector<std::string>>{{"ior=0"},

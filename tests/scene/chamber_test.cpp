@@ -2,12 +2,18 @@
 #include "common/parameters.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
+#include "scene/metals.h"
+#include "support/mesh_topology.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gib::scene {
@@ -21,6 +27,8 @@ constexpr const char* kDefaultChamberHash = "0014adf7eceaa1f5e736db38e03529d5";
 // The hall's interior (metres, chamber.cpp): x in [−4, 4], y in [0, 7.2], z in [0, 12]; the nave's
 // vault turns about the axis x = 0, y = 5.
 constexpr float kHalfWidth = 4.0f, kCrownY = 7.2f, kLength = 12.0f, kVaultAxisY = 5.0f;
+// Where the arches spring, on the capitals.
+constexpr float kSpringY = 3.0f;
 // Smallest triangle area we accept (m²); the smallest at detail 5 is about 10⁻³ m².
 constexpr float kMinTriangleArea = 1e-6f;
 
@@ -90,15 +98,16 @@ TEST(Chamber, HasNoDegenerateTriangles) {
 
 TEST(Chamber, StaysInsideTheHall) {
   constexpr float kSlack = 1e-4f;
-  const Scene scene = chamberAt(2);
-  for (const Mesh& mesh : scene.meshes)
-    for (const glm::vec3& p : mesh.positions) {
-      ASSERT_LE(std::abs(p.x), kHalfWidth + kSlack) << mesh.name;
-      ASSERT_GE(p.y, -kSlack) << mesh.name;
-      ASSERT_LE(p.y, kCrownY + kSlack) << mesh.name;
-      ASSERT_GE(p.z, -kSlack) << mesh.name;
-      ASSERT_LE(p.z, kLength + kSlack) << mesh.name;
-    }
+  for (const Scene& scene :
+       {chamberAt(2), makeChamber(chamberValues({"detail=2", "specular=objects"}))})
+    for (const Mesh& mesh : scene.meshes)
+      for (const glm::vec3& p : mesh.positions) {
+        ASSERT_LE(std::abs(p.x), kHalfWidth + kSlack) << mesh.name;
+        ASSERT_GE(p.y, -kSlack) << mesh.name;
+        ASSERT_LE(p.y, kCrownY + kSlack) << mesh.name;
+        ASSERT_GE(p.z, -kSlack) << mesh.name;
+        ASSERT_LE(p.z, kLength + kSlack) << mesh.name;
+      }
 }
 
 TEST(Chamber, ShellFacesIntoTheHall) {
@@ -202,12 +211,109 @@ TEST(Chamber, CameraSeesTheLitFloor) {
 }
 
 TEST(Chamber, RejectsBadParameters) {
-  for (const char* bad : {"detail=9", "detail=0", "detail=1.5", "light_intensity=-1",
-                          "light_position=0,1", "light_target=0,0,nan", "lamp=1"})
+  for (const char* bad :
+       {"detail=9", "detail=0", "detail=1.5", "light_intensity=-1", "light_position=0,1",
+        "light_target=0,0,nan", "lamp=1", "specular=teapot"})
     EXPECT_THROW(chamberValues({bad}), InputError) << bad;
   // A light at its own target has no direction.
   EXPECT_THROW(makeChamber(chamberValues({"light_position=1,2,3", "light_target=1,2,3"})),
                InputError);
+}
+
+// specular=objects (book Figs. 6.9 and 6.11): the objects' meshes, by name.
+constexpr const char* kSpecularObjects[] = {"aluminium_torus", "glass_sphere", "glass_pane",
+                                            "mirror_panel"};
+// The nave's free floor: inside the plinths' faces (x = ±2.1) and the responds (0.35 m from the
+// end walls); objects keep clear of it by this much.
+constexpr float kNaveFreeHalfWidth = 2.1f, kRespondDepth = 0.35f;
+
+TEST(Chamber, SpecularObjectsKeepTheDefaultScene) {
+  const Scene plain = makeChamber(chamberValues({"specular=none"}));
+  EXPECT_EQ(hashScene(plain), kDefaultChamberHash);
+  EXPECT_FALSE(plain.hasIdealSpecular());
+  const Scene with = makeChamber(chamberValues({"specular=objects"}));
+  EXPECT_NE(hashScene(with), kDefaultChamberHash);
+  // The chamber itself is unchanged: the objects come after its meshes.
+  ASSERT_EQ(with.meshes.size(), plain.meshes.size() + std::size(kSpecularObjects));
+  for (std::size_t i = 0; i < plain.meshes.size(); ++i) {
+    EXPECT_EQ(with.meshes[i].name, plain.meshes[i].name);
+    EXPECT_EQ(with.meshes[i].positions, plain.meshes[i].positions);
+  }
+  EXPECT_NO_THROW(validateScene(with));
+}
+
+TEST(Chamber, SpecularObjectsAreIdealMirrorsAndGlass) {
+  const Scene scene = makeChamber(chamberValues({"specular=objects"}));
+  EXPECT_TRUE(scene.hasIdealSpecular());
+  const Material& teapot = scene.materials.at(meshNamed(scene, "aluminium_torus").material);
+  EXPECT_EQ(teapot.type, MaterialType::kMirror);
+  EXPECT_EQ(teapot.conductor_n, findMetal("aluminium")->n);
+  EXPECT_EQ(teapot.conductor_k, findMetal("aluminium")->k);
+  const Material& skull = scene.materials.at(meshNamed(scene, "glass_sphere").material);
+  EXPECT_EQ(skull.type, MaterialType::kGlass);
+  EXPECT_FLOAT_EQ(skull.ior, 1.3f) << "Fig. 6.9's glass skull";
+  EXPECT_EQ(scene.materials.at(meshNamed(scene, "glass_pane").material).type, MaterialType::kGlass);
+  EXPECT_EQ(scene.materials.at(meshNamed(scene, "mirror_panel").material).type,
+            MaterialType::kMirror);
+  // Each object its own material; the curved ones smooth-shaded.
+  std::vector<std::uint32_t> materials;
+  for (const char* name : kSpecularObjects) materials.push_back(meshNamed(scene, name).material);
+  std::sort(materials.begin(), materials.end());
+  EXPECT_EQ(std::unique(materials.begin(), materials.end()), materials.end());
+  for (const char* name : {"aluminium_torus", "glass_sphere"})
+    EXPECT_EQ(meshNamed(scene, name).normals.size(), meshNamed(scene, name).positions.size())
+        << name;
+  // The pane and the panel are thin: a few centimetres between their large faces.
+  for (const char* name : {"glass_pane", "mirror_panel"}) {
+    const Mesh& slab = meshNamed(scene, name);
+    const double volume = test::signedVolume({&slab});
+    EXPECT_GT(volume, 0.0) << name;
+    EXPECT_LT(volume, 1.0 * 1.4 * 0.05) << name;
+  }
+}
+
+TEST(Chamber, SpecularObjectsAreClosedAndFaceOutwards) {
+  const Scene scene = makeChamber(chamberValues({"specular=objects"}));
+  for (const char* name : kSpecularObjects) {
+    const Mesh& mesh = meshNamed(scene, name);
+    EXPECT_EQ(test::unmatchedEdges({&mesh}), 0u) << name << ": every edge between two triangles";
+    EXPECT_GT(test::signedVolume({&mesh}), 0.0) << name << " faces outwards";
+  }
+}
+
+TEST(Chamber, SpecularObjectsStandOnTheNaveFloorInView) {
+  const Scene scene = makeChamber(chamberValues({"specular=objects"}));
+  const CameraFrame f = makeCameraFrame(scene.camera, scene.default_width, scene.default_height);
+  std::vector<std::pair<glm::vec3, glm::vec3>> bounds;
+  for (const char* name : kSpecularObjects) {
+    const Mesh& mesh = meshNamed(scene, name);
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh.positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+      // In view: every vertex projects inside the image.
+      const glm::vec3 v = p - f.origin;
+      const float depth = glm::dot(v, f.forward);
+      ASSERT_GT(depth, 0.0f) << name;
+      EXPECT_LT(std::abs(glm::dot(v, f.right) / depth), f.tan_half_fov_y * f.aspect) << name;
+      EXPECT_LT(std::abs(glm::dot(v, f.up) / depth), f.tan_half_fov_y) << name;
+    }
+    // On the floor, not in it, and clear of the plinths, pillars, end walls and the spot light.
+    EXPECT_GT(lo.y, 0.0f) << name;
+    EXPECT_LT(lo.y, 0.01f) << name << " stands on the floor";
+    EXPECT_LT(hi.y, kSpringY) << name;
+    EXPECT_LT(std::max(std::abs(lo.x), std::abs(hi.x)), kNaveFreeHalfWidth - 0.2f) << name;
+    EXPECT_GT(lo.z, kRespondDepth) << name;
+    EXPECT_LT(hi.z, kLength - kRespondDepth) << name;
+    bounds.emplace_back(lo, hi);
+  }
+  // Apart from each other: their bounding boxes do not overlap.
+  for (std::size_t i = 0; i < bounds.size(); ++i)
+    for (std::size_t j = i + 1; j < bounds.size(); ++j) {
+      const bool overlap = glm::all(glm::lessThan(bounds[i].first, bounds[j].second)) &&
+                           glm::all(glm::lessThan(bounds[j].first, bounds[i].second));
+      EXPECT_FALSE(overlap) << kSpecularObjects[i] << " and " << kSpecularObjects[j];
+    }
 }
 
 }  // namespace
