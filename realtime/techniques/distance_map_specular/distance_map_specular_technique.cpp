@@ -125,6 +125,7 @@ image::Image DistanceMapSpecularTechnique::searchError() {
   const scene::Scene& scene = scene_->scene();
   const std::unique_ptr<scene::RayCaster> caster = services_.ray_caster(scene);
   const float epsilon = caster->rayEpsilon();
+  const float diagonal = glm::length(scene_->boundsMax() - scene_->boundsMin());
   image::Image error(width, height, 3);
   double sum = 0, max_error = 0;
   std::size_t count = 0;
@@ -141,7 +142,11 @@ image::Image DistanceMapSpecularTechnique::searchError() {
       // A ray that leaves the scene has no hit to miss: the search ends in its direction too.
       if (!truth.valid()) continue;
       const glm::vec3 found(hit.pixel(x, y)[0], hit.pixel(x, y)[1], hit.pixel(x, y)[2]);
-      const float e = glm::length(found - (p + truth.t * d));
+      // A search that ends on a texel of the sky (kDistanceMapNoSurface away: what o sees
+      // through an opening) where Embree hits a surface is off by the scene's diagonal at most
+      // in any sense that matters; computed unclamped, its square overflows float to inf.
+      const float e = float(
+          std::min(glm::length(glm::dvec3(found) - glm::dvec3(p + truth.t * d)), double(diagonal)));
       for (int c = 0; c < 3; ++c) error.pixel(x, y)[c] = e;
       sum += e;
       max_error = std::max(max_error, double(e));
