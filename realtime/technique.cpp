@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "common/join.h"
 #include "realtime/techniques/direct/direct_technique.h"
+#include "realtime/techniques/distance_map_gather/distance_map_gather_technique.h"
 #include "realtime/techniques/distance_map_specular/distance_map_specular_technique.h"
 #include "realtime/techniques/gpu_ray_tracing/gpu_ray_tracing_technique.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
@@ -38,7 +39,8 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        illuminationNetworkTechniqueInfo(),
                                                        obscurancesTechniqueInfo(),
                                                        gpuRayTracingTechniqueInfo(),
-                                                       distanceMapSpecularTechniqueInfo()};
+                                                       distanceMapSpecularTechniqueInfo(),
+                                                       distanceMapGatherTechniqueInfo()};
   return catalogue;
 }
 
@@ -52,6 +54,8 @@ std::string_view needName(TechniqueNeed need) {
       return "specular materials";
     case TechniqueNeed::kEnvironmentLight:
       return "environment light";
+    case TechniqueNeed::kShadedObject:
+      return "a non-emitting object";
   }
   return "?";
 }
@@ -122,6 +126,15 @@ std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const sce
         return fmt::format(
             "technique '{}' is lit by an environment and scene '{}' has no sky; give it a scene "
             "with a sky",
+            info.name, scene.name);
+      case TechniqueNeed::kShadedObject:
+        if (std::any_of(scene.meshes.begin(), scene.meshes.end(), [&](const scene::Mesh& mesh) {
+              return !mesh.triangles.empty() && !scene.materials[mesh.material].isEmissive();
+            }))
+          continue;
+        return fmt::format(
+            "technique '{}' shades one object of the scene and scene '{}' has no mesh that does "
+            "not emit; give it a scene with a diffuse or glossy object",
             info.name, scene.name);
     }
   }

@@ -122,6 +122,9 @@ enum class TechniqueNeed {
   // it is refused such a scene
   kSpecularMaterials,
   kEnvironmentLight,  // light arriving from beyond the scene (a sky)
+  // a mesh with triangles that does not emit, for a technique that shades one object by itself
+  // (distance_map_gather's final gathering)
+  kShadedObject,
 };
 
 // "ray caster", "participating medium", …: the need in messages, `gibench list` and the READMEs.

@@ -69,19 +69,8 @@ void DistanceMapSpecularTechnique::prepare(const GpuScene& scene, int width, int
 }
 
 void DistanceMapSpecularTechnique::render(Frame& frame) {
-  gl::PassProfiler& profiler = frame.profiler;
-  surface_lighting_.drawSurfaces(*scene_, frame.target, profiler);
-  {
-    auto pass = profiler.pass(kMapViewsPass);
-    maps_->rasterise(*scene_);
-    maps_->clearLight();
-  }
-  surface_lighting_.addDirect(*scene_, &frame.target, profiler, {maps_->litView(kMapLightPass)});
-  {
-    auto pass = profiler.pass(kComposeMapsPass);
-    maps_->compose(*scene_, rounds_);
-  }
-  auto pass = profiler.pass(kSpecularPass);
+  drawSurfacesAndMaps(surface_lighting_, *scene_, *maps_, rounds_, frame);
+  auto pass = frame.profiler.pass(kSpecularPass);
   frame.target.bind();
   drawSpecular(specular_);
 }
@@ -226,13 +215,9 @@ TechniqueInfo distanceMapSpecularTechniqueInfo() {
                         "where each map is taken from: its object's centre, or the centre of the "
                         "scene (the book's Figs. 6.2 and 6.6)")},
        SurfaceLighting::parameters()});
-  SurfaceLighting::declarePasses(info.passes, {{kMapLightPass,
-                                                "the batch's light in the maps' "
-                                                "views"}});
-  info.passes.add(passPath({kFramePass, kMapViewsPass}),
-                  "the six views of every specular object's map, without the object");
-  info.passes.add(passPath({kFramePass, kComposeMapsPass}),
-                  "the maps composed from their views' emission and light, `rounds` times");
+  declareDistanceMapPasses(
+      info.passes, {"the six views of every specular object's map, without the object",
+                    "the maps composed from their views' emission and light, `rounds` times"});
   info.passes.add(passPath({kFramePass, kSpecularPass}),
                   "the mirror and glass pixels' rays searched in their objects' maps");
   info.auxiliary_images = {

@@ -7,6 +7,7 @@
 // class L D? S{0,rounds} E. See README.md beside this file.
 #pragma once
 
+#include "realtime/distance_map/distance_map_frame.h"
 #include "realtime/distance_map/distance_maps.h"
 #include "realtime/gl/fullscreen_pass.h"
 #include "realtime/gl/objects.h"
@@ -19,9 +20,6 @@
 
 namespace gib::rt {
 
-inline constexpr std::string_view kMapViewsPass = "map views";  // the maps' G-buffer
-inline constexpr std::string_view kMapLightPass = "map light";  // the batches' light in them
-inline constexpr std::string_view kComposeMapsPass = "compose maps";
 inline constexpr std::string_view kSpecularPass = "specular";
 
 class DistanceMapSpecularTechnique final : public Technique {
