@@ -109,18 +109,25 @@ std::vector<MetricValueInfo> relMseValues() {
                     .description = "relMSE over the pixels where the technique's rasteriser and "
                                    "the reference's camera ray see the same surface (all pixels "
                                    "when not checked)"});
+  values.push_back({.name = "relmse_region",
+                    .direction = kLower,
+                    .label = "relmse over the technique's region",
+                    .description = "relMSE over the pixels the technique names as what its own "
+                                   "light reaches (a gathered object, the mirrors and glass), "
+                                   "without the shared direct light elsewhere (all pixels when "
+                                   "it names none)"});
   return values;
 }
 
-// The mean of a one-channel map's finite values where `excluded` is 0.
-double meanOutside(const image::Image& map, const image::Image& excluded) {
-  if (excluded.width() != map.width() || excluded.height() != map.height() ||
-      excluded.channels() != 1)
-    throw std::invalid_argument("the disagreement mask must be one channel of the images' size");
+// The mean of a one-channel map's finite values where `mask` is 0 (`inside` false) or non-zero
+// (`inside` true).
+double maskedMean(const image::Image& map, const image::Image& mask, bool inside) {
+  if (mask.width() != map.width() || mask.height() != map.height() || mask.channels() != 1)
+    throw std::invalid_argument("a metric's pixel mask must be one channel of the images' size");
   double sum = 0;
   std::size_t count = 0;
   for (std::size_t i = 0; i < map.data().size(); ++i)
-    if (excluded.data()[i] == 0 && std::isfinite(map.data()[i])) {
+    if ((mask.data()[i] != 0) == inside && std::isfinite(map.data()[i])) {
       sum += map.data()[i];
       ++count;
     }
@@ -140,8 +147,11 @@ void addRelMse(const image::Image& r, const image::Image& t, const MetricOptions
     report.values.emplace_back(kConcentrationFigures[i].share, concentration[i].share);
   for (std::size_t i = 0; i < concentration.size(); ++i)
     report.values.emplace_back(kConcentrationFigures[i].without, concentration[i].mean_without);
-  report.values.emplace_back(
-      "relmse_agreeing", o.disagreement ? meanOutside(relmse.map, *o.disagreement) : relmse.value);
+  report.values.emplace_back("relmse_agreeing", o.disagreement
+                                                    ? maskedMean(relmse.map, *o.disagreement, false)
+                                                    : relmse.value);
+  report.values.emplace_back("relmse_region",
+                             o.region ? maskedMean(relmse.map, *o.region, true) : relmse.value);
   report.maps.emplace_back("relmse", std::move(relmse.map));
 }
 

@@ -23,6 +23,10 @@ struct MetricOptions {
   // channel, non-zero: disagree; reference/primary_agreement.h), or null when not checked. Every
   // value keeps them; relmse_agreeing is relMSE without them.
   const image::Image* disagreement = nullptr;
+  // The pixels a technique names as what its own light reaches (one channel, non-zero: inside;
+  // rt::Technique::measuredRegion: a gathered object, the mirrors and glass), or null. Every
+  // value keeps all pixels; relmse_region is relMSE over these alone.
+  const image::Image* region = nullptr;
 };
 
 // Which way a value improves.

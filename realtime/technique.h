@@ -110,6 +110,11 @@ class Technique {
   // Counts measured on the last frame (a search's mean error against Embree), recorded with
   // statistics(). Called after auxiliaryImages(); declared in TechniqueInfo::statistics alike.
   virtual std::vector<TechniqueStatistic> finalStatistics() const { return {}; }
+  // The pixels its own light reaches, where the rest of the image is the shared direct light (a
+  // gathered object, the mirrors and glass): one channel of the image's size, 1 inside, pixel
+  // (0,0) at the top left. The harness measures relMSE over them too (relmse_region). Called
+  // after auxiliaryImages(); none: the whole image is the technique's.
+  virtual std::optional<image::Image> measuredRegion() { return std::nullopt; }
 };
 
 // What a technique needs besides a GPU scene. The runner checks every need once, before the

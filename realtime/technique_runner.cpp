@@ -148,6 +148,7 @@ TechniqueRunResult runTechniqueUnnamed(const scene::Scene& scene, const Techniqu
     const std::vector<TechniqueStatistic> measured = technique->finalStatistics();
     checkOutputsDeclared(info, measured, info.statistics, "statistic", "statistics");
     result.statistics.insert(result.statistics.end(), measured.begin(), measured.end());
+    result.region = technique->measuredRegion();
     result.path_class = technique->pathClass();
     result.obscurance = technique->imageObscurance();
     if (settings.capture_primary_surfaces) {

@@ -59,9 +59,10 @@ struct TechniqueRunResult {
   std::vector<IterationCapture> captures;  // one per TechniqueRunSettings::capture_after
   std::vector<AuxiliaryImage> auxiliary;   // Technique::auxiliaryImages after the last frame
   std::vector<TechniqueStatistic> statistics;
-  double upload_ms = 0;   // scene upload, wall clock around glFinish
-  double prepare_ms = 0;  // Technique::prepare
-  double iterate_ms = 0;  // all step() calls
+  std::optional<image::Image> region;  // Technique::measuredRegion after the last frame
+  double upload_ms = 0;                // scene upload, wall clock around glFinish
+  double prepare_ms = 0;               // Technique::prepare
+  double iterate_ms = 0;               // all step() calls
   int iterations = 0;
   std::optional<PrimarySurfaces> primary;  // when capture_primary_surfaces
   scene::PathClass path_class;

@@ -106,26 +106,32 @@ ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment&
   return stored;
 }
 
-// `disagreement`: the pixels whose primary hit the technique and the reference disagree on, or
-// null (metrics::MetricOptions::disagreement).
+// The pixels a technique job's metrics single out (metrics::MetricOptions): where its primary hit
+// and the reference's disagree, and the region its own light reaches (Technique::measuredRegion);
+// null where not known.
+struct PixelMasks {
+  const image::Image* disagreement = nullptr;
+  const image::Image* region = nullptr;
+};
+
 metrics::MetricReport measure(const image::Image& reference, const image::Image& test,
-                              const std::vector<std::string>& names,
-                              const image::Image* disagreement = nullptr) {
+                              const std::vector<std::string>& names, PixelMasks masks = {}) {
   metrics::MetricOptions options;
-  options.disagreement = disagreement;
+  options.disagreement = masks.disagreement;
+  options.region = masks.region;
   return metrics::evaluateMetrics(reference, test, names, options);
 }
 
 void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env,
                                  const JobDirectory& files, const image::Image& test,
-                                 const image::Image* disagreement, results::JobResult& result) {
+                                 PixelMasks masks, results::JobResult& result) {
   if (referenceClass(p) == scene::PathClass{}) return;  // the class reference is the full one
   if (p.obscurance) return;  // an obscurance is not radiance: no full reference measures it
   results::ReferenceUse use;
   const ref::StoredReference full = obtainReference(p, env, scene::PathClass{}, &use);
   result.full_reference = use;
   result.outputs.full_reference_exr = copyReferenceExr(files, full);
-  result.metrics_full = measure(full.mean, test, p.job->settings.metrics, disagreement).values;
+  result.metrics_full = measure(full.mean, test, p.job->settings.metrics, masks).values;
 }
 
 // The reference alone: the stored reference, and when the case lists checkpoints an independent
@@ -209,14 +215,13 @@ rt::TechniqueRunSettings techniqueSettings(const PreparedJob& p, const JobEnviro
 // the run captured on its way.
 results::Convergence techniqueConvergence(const PreparedJob& p,
                                           const std::vector<rt::IterationCapture>& captures,
-                                          const image::Image& reference,
-                                          const image::Image* disagreement) {
+                                          const image::Image& reference, PixelMasks masks) {
   results::Convergence convergence;
   convergence.x_label = "iterations";
   for (const rt::IterationCapture& capture : captures)
     convergence.points.push_back(
         {double(capture.iterations),
-         measure(reference, capture.image, p.job->settings.metrics, disagreement).values,
+         measure(reference, capture.image, p.job->settings.metrics, masks).values,
          capture.iterate_ms * 1e-3});
   fitConvergence(convergence);
   return convergence;
@@ -273,14 +278,15 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const JobD
       obtainReference(p, env, referenceClass(p), &result.reference);
   std::optional<image::Image> disagreement;
   if (run.primary) disagreement = recordPrimaryAgreement(p, files, *run.primary, result);
-  const image::Image* mask = disagreement ? &*disagreement : nullptr;
+  const PixelMasks masks{disagreement ? &*disagreement : nullptr,
+                         run.region ? &*run.region : nullptr};
   const metrics::MetricReport report =
-      measure(reference.mean, run.image, p.job->settings.metrics, mask);
+      measure(reference.mean, run.image, p.job->settings.metrics, masks);
   result.metrics = report.values;
   writeComparisonImages(files, reference, run.image, report, result.outputs);
-  measureAgainstFullReference(p, env, files, run.image, mask, result);
+  measureAgainstFullReference(p, env, files, run.image, masks, result);
   if (!p.job->settings.checkpoints.empty())
-    result.convergence = techniqueConvergence(p, run.captures, reference.mean, mask);
+    result.convergence = techniqueConvergence(p, run.captures, reference.mean, masks);
 }
 
 std::string jobHash(const PreparedJob& p) {

@@ -10,6 +10,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -50,6 +51,19 @@ std::vector<DistanceMapObject> specularObjects(const scene::Scene& scene) {
         scene::isIdealSpecular(scene.materials[scene.meshes[m].material].type))
       objects.push_back(meshObject(scene, m));
   return objects;
+}
+
+image::Image objectPixels(const GBuffer& camera, const std::vector<DistanceMapObject>& objects) {
+  const image::Image codes = gl::readTexture(camera.albedo(), 4);
+  image::Image mask(codes.width(), codes.height(), 1);
+  for (int y = 0; y < codes.height(); ++y)
+    for (int x = 0; x < codes.width(); ++x) {
+      const int triangle = int(std::abs(codes.pixel(x, y)[3])) - 1;  // −1: background
+      for (const DistanceMapObject& object : objects)
+        if (triangle >= object.first_triangle && triangle < object.end_triangle)
+          mask.pixel(x, y)[0] = 1.0f;
+    }
+  return mask;
 }
 
 void placeReferencePoints(std::vector<DistanceMapObject>& objects, ReferencePoint where,

@@ -6,6 +6,7 @@
 // is everything else, §6.2), and rounds of composing let maps show each other's objects (§6.3).
 #pragma once
 
+#include "image/image.h"
 #include "realtime/distance_map/distance_map_shared.h"
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/objects.h"
@@ -39,6 +40,11 @@ DistanceMapObject meshObject(const scene::Scene& scene, std::size_t mesh);
 // Every mesh with triangles whose material is a mirror or glass (scene::isIdealSpecular), in
 // order: the specular objects of §6.2-6.3.
 std::vector<DistanceMapObject> specularObjects(const scene::Scene& scene);
+
+// The camera's pixels that see one of the objects (GBuffer::albedo's triangle codes): one channel,
+// 1 on an object, pixel (0,0) at the top left, what the techniques name as their measured region
+// (Technique::measuredRegion).
+image::Image objectPixels(const GBuffer& camera, const std::vector<DistanceMapObject>& objects);
 
 // Where each map is taken from: the object's centre (the book's §6.2), or the centre of the
 // scene's bounds for every map (the room's centre of Figs. 6.2 and 6.6).

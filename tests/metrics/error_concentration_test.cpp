@@ -82,6 +82,24 @@ TEST(ErrorConcentration, RelMseReportsItsConcentration) {
   EXPECT_NEAR(masked.value("relmse_agreeing"), pixel, 1e-6);
   EXPECT_EQ(masked.value("relmse"), report.value("relmse"));
   EXPECT_EQ(findMetricValue("relmse_top1pct_share")->direction, MetricDirection::kDescriptive);
+}
+
+// A technique's region (Technique::measuredRegion: its object, its mirrors) gets relMSE over its
+// pixels alone, beside the whole image's: the region here is a column with the edge pixel.
+TEST(ErrorConcentration, RelMseOverATechniquesRegion) {
+  image::Image reference(100, 20, 3, 1.0f), test(100, 20, 3, 1.1f);
+  for (int y = 0; y < 20; ++y)
+    for (int c = 0; c < 3; ++c) test.pixel(3, y)[c] = 2.0f;
+  const MetricReport whole = evaluateMetrics(reference, test, {"relmse"});
+  EXPECT_EQ(whole.value("relmse_region"), whole.value("relmse"));
+  image::Image region(100, 20, 1);
+  for (int y = 0; y < 20; ++y) region.pixel(3, y)[0] = 1.0f;
+  MetricOptions options;
+  options.region = &region;
+  const MetricReport masked = evaluateMetrics(reference, test, {"relmse"}, options);
+  EXPECT_NEAR(masked.value("relmse_region"), 1.0 / 1.01, 1e-6);
+  EXPECT_EQ(masked.value("relmse"), whole.value("relmse"));
+  EXPECT_EQ(findMetricValue("relmse_region")->direction, MetricDirection::kLowerIsBetter);
   EXPECT_EQ(distanceFromIdeal("relmse_top1pct_share", 0.9), 0.0);
 }
 

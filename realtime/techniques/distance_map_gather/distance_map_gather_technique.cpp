@@ -203,6 +203,10 @@ std::vector<AuxiliaryImage> DistanceMapGatherTechnique::auxiliaryImages() {
   return images;
 }
 
+std::optional<image::Image> DistanceMapGatherTechnique::measuredRegion() {
+  return objectPixels(surface_lighting_.gbuffer(), maps_->objects());  // the gathering object
+}
+
 std::vector<TechniqueStatistic> DistanceMapGatherTechnique::statistics() const {
   const double texels = 6.0 * gather_size_ * gather_size_;
   return {{"map_texels", 6.0 * resolution_ * resolution_},

@@ -34,6 +34,7 @@ class DistanceMapGatherTechnique final : public Technique {
   std::vector<AuxiliaryImage> auxiliaryImages() override;
   std::vector<TechniqueStatistic> statistics() const override;
   std::vector<TechniqueStatistic> finalStatistics() const override;
+  std::optional<image::Image> measuredRegion() override;
 
  private:
   // The object the parameter `object` names, checked (gib::InputError).

@@ -31,7 +31,10 @@ int searchMethod(const std::string& name) {
 }  // namespace
 
 std::string distanceMapSpecularPathExpression(int rounds) {
-  return fmt::format("LD?S{{0,{}}}E", rounds);
+  // A round is one object's interaction: a mirror's one specular vertex, or a glass's two (the
+  // single refraction of §6.2 stands for the ray's way in and out, which the reference traces as
+  // two vertices; the class of k = 1 would leave the glass black).
+  return fmt::format("LD?S{{0,{}}}E", 2 * rounds);
 }
 
 DistanceMapSpecularTechnique::DistanceMapSpecularTechnique(const ParameterValues& p)
@@ -175,6 +178,10 @@ std::vector<AuxiliaryImage> DistanceMapSpecularTechnique::auxiliaryImages() {
   return images;
 }
 
+std::optional<image::Image> DistanceMapSpecularTechnique::measuredRegion() {
+  return objectPixels(surface_lighting_.gbuffer(), maps_->objects());  // the mirrors and glass
+}
+
 std::vector<TechniqueStatistic> DistanceMapSpecularTechnique::statistics() const {
   return {{"map_objects", maps_ ? double(maps_->objects().size()) : 0.0},
           {"map_texels", maps_ ? 6.0 * resolution_ * resolution_ * maps_->objects().size() : 0.0}};
@@ -208,9 +215,10 @@ TechniqueInfo distanceMapSpecularTechniqueInfo() {
         choiceParameter("fresnel", "schlick", {"schlick", "exact"},
                         "Fresnel's function: eq. 1.6's approximation as the book, or the exact one "
                         "the reference uses"),
-        numericParameter("rounds", ParameterType::kInteger, "1", 1, 8, "",
-                         "rounds of map generation (§6.3): each adds one reflection of the other "
-                         "specular objects, the k of L D? S{0,k} E"),
+        numericParameter(
+            "rounds", ParameterType::kInteger, "1", 1, 8, "",
+            "rounds of map generation (§6.3): each adds one reflection of the other "
+            "specular objects (the class is L D? S{0,2·rounds} E: a glass is two vertices)"),
         choiceParameter("reference_point", "object_centre", {"object_centre", "scene_centre"},
                         "where each map is taken from: its object's centre, or the centre of the "
                         "scene (the book's Figs. 6.2 and 6.6)")},

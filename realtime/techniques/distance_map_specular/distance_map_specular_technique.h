@@ -4,7 +4,8 @@
 // G-buffer, emission, shadow-mapped light samples) with the maps' views lit by the same batches;
 // then the maps are composed (`rounds` rounds, each adding a specular bounce between objects)
 // and every mirror or glass pixel traces its rays through its object's map by `search`. Path
-// class L D? S{0,rounds} E. See README.md beside this file.
+// class L D? S{0,2·rounds} E (a glass's way through is two vertices). See README.md beside this
+// file.
 #pragma once
 
 #include "realtime/distance_map/distance_map_frame.h"
@@ -33,6 +34,7 @@ class DistanceMapSpecularTechnique final : public Technique {
   std::vector<AuxiliaryImage> auxiliaryImages() override;
   std::vector<TechniqueStatistic> statistics() const override;
   std::vector<TechniqueStatistic> finalStatistics() const override;
+  std::optional<image::Image> measuredRegion() override;
 
  private:
   // The specular pass (`specular_`, or `capture_` with its hit and ray targets) into the bound
@@ -54,8 +56,8 @@ class DistanceMapSpecularTechnique final : public Technique {
   bool search_error_measured_ = false;
 };
 
-// "LD?S{0,rounds}E": emitters and the diffuse surfaces' direct light seen directly or through up
-// to `rounds` specular vertices.
+// "LD?S{0,2·rounds}E": emitters and the diffuse surfaces' direct light seen directly or through up
+// to `rounds` objects, a mirror one specular vertex and a glass two.
 std::string distanceMapSpecularPathExpression(int rounds);
 
 TechniqueInfo distanceMapSpecularTechniqueInfo();
