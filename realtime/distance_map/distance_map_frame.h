@@ -4,13 +4,17 @@
 // technique that composes the block times the same passes under the same names.
 #pragma once
 
+#include "image/image.h"
 #include "realtime/distance_map/distance_maps.h"
+#include "realtime/gl/objects.h"
 #include "realtime/lighting/surface_lighting.h"
 #include "realtime/pass_declarations.h"
 #include "realtime/technique.h"
 
+#include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace gib::rt {
 
@@ -34,5 +38,16 @@ void declareDistanceMapPasses(PassDeclarations& passes,
 // and the maps' views, then the maps composed `rounds` times.
 void drawSurfacesAndMaps(SurfaceLighting& surface_lighting, const GpuScene& scene,
                          DistanceMaps& maps, int rounds, Frame& frame);
+
+// Draws `draw` (a full-screen pass of a technique built with its capture outputs) into a
+// width × height RGBA32F colour target and `extra` more, all cleared to zero, and reads them back
+// (pixel (0,0) at the top left; the colour's RGB, the others' RGBA): what a technique's auxiliary
+// images capture after the last frame.
+std::vector<image::Image> drawCaptured(int width, int height, int extra,
+                                       const std::function<void()>& draw);
+
+// The radiance of a cube-map array unfolded as the book's Fig. 6.3 lays one out: cube k in row k,
+// its faces +x −x +y −y +z −z from the left.
+image::Image unfoldCubes(const gl::Texture& cubes);
 
 }  // namespace gib::rt

@@ -1,5 +1,6 @@
 #include "support/technique_frame.h"
 
+#include "common/input_error.h"
 #include "reference/embree_scene.h"
 #include "scene/mesh_builder.h"
 
@@ -56,6 +57,21 @@ double statisticNamed(const std::vector<rt::TechniqueStatistic>& statistics,
     if (s.name == name) return s.value;
   ADD_FAILURE() << "no statistic '" << name << "'";
   return std::numeric_limits<double>::quiet_NaN();
+}
+
+void expectParametersRefused(const std::string& technique,
+                             const std::vector<std::string>& assignments) {
+  const rt::TechniqueInfo& info = rt::findTechnique(technique);
+  for (const std::string& bad : assignments) {
+    try {
+      parseParameters(info.parameters, {bad}, "technique '" + technique + "'");
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InputError& e) {
+      const std::string key = bad.substr(0, bad.find('='));
+      EXPECT_NE(std::string(e.what()).find("parameter '" + key + "'"), std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace gib::test

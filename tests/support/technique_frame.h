@@ -30,4 +30,9 @@ ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std:
 // not read as 0.
 double statisticNamed(const std::vector<rt::TechniqueStatistic>& statistics, std::string_view name);
 
+// Each of `assignments` ("key=value") is refused when the technique's parameters are parsed, by
+// an input error that names its key: a test failure for each that is accepted or not named.
+void expectParametersRefused(const std::string& technique,
+                             const std::vector<std::string>& assignments);
+
 }  // namespace gib::test

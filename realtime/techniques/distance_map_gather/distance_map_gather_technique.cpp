@@ -154,21 +154,9 @@ std::vector<AuxiliaryImage> DistanceMapGatherTechnique::auxiliaryImages() {
   const int width = surface_lighting_.gbuffer().width();
   const int height = surface_lighting_.gbuffer().height();
   // The last frame's gather again, alone, with the texels each pixel gathered.
-  RenderTarget gathered(width, height);
-  gl::Texture texels = gl::Texture::make2D(GL_RGBA32F, width, height);
-  gl::Framebuffer framebuffer;
-  framebuffer.attachColor(0, gathered.color());
-  framebuffer.attachColor(1, texels);
-  framebuffer.setDrawBuffers(2);
-  framebuffer.checkComplete();
-  framebuffer.bind();
-  const float zero[4] = {0, 0, 0, 0};
-  for (int i = 0; i < 2; ++i) glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, i, zero);
-  {
-    const gl::PipelineScope viewport({.viewport = gl::PixelRect{0, 0, width, height}});
-    drawGather(capture_);
-  }
-  const image::Image counts = gl::readTexture(texels, 4);
+  std::vector<image::Image> captured =
+      drawCaptured(width, height, 1, [&] { drawGather(capture_); });
+  const image::Image& counts = captured[1];
   double sum = 0, pixels = 0;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
@@ -181,25 +169,12 @@ std::vector<AuxiliaryImage> DistanceMapGatherTechnique::auxiliaryImages() {
   measured_ = true;
 
   std::vector<AuxiliaryImage> images;
-  images.push_back({"gather", "the light the object gathers (its pixels only)", gathered.read()});
-  // The map the gather reads, unfolded as the book's Fig. 6.3: faces +x −x +y −y +z −z.
-  const int n = low_res_.width();
-  std::vector<float> data(std::size_t(n) * n * 6 * 4);
-  glGetTextureImage(low_res_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)),
-                    data.data());
-  image::Image strip(6 * n, n, 3);
-  for (int face = 0; face < 6; ++face)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const float* texel = &data[((std::size_t(face) * n + j) * n + i) * 4];
-        // Texel row j counts from the bottom (cube_faces.h); the image's from the top.
-        float* out = strip.pixel(face * n + i, n - 1 - j);
-        for (int c = 0; c < 3; ++c) out[c] = texel[c];
-      }
+  images.push_back(
+      {"gather", "the light the object gathers (its pixels only)", std::move(captured[0])});
   images.push_back({"low_res_map",
                     "the downsampled map the gather reads (M² per face; 16² with "
                     "mode=irradiance_map), faces +x −x +y −y +z −z",
-                    std::move(strip)});
+                    unfoldCubes(low_res_)});
   return images;
 }
 

@@ -93,24 +93,10 @@ image::Image DistanceMapSpecularTechnique::searchError() {
   const int width = surface_lighting_.gbuffer().width();
   const int height = surface_lighting_.gbuffer().height();
   // The last frame's maps, searched again with the hit and ray written out.
-  gl::Texture hits = gl::Texture::make2D(GL_RGBA32F, width, height);
-  gl::Texture rays = gl::Texture::make2D(GL_RGBA32F, width, height);
-  RenderTarget scratch(width, height);
-  gl::Framebuffer framebuffer;
-  framebuffer.attachColor(0, scratch.color());
-  framebuffer.attachColor(1, hits);
-  framebuffer.attachColor(2, rays);
-  framebuffer.setDrawBuffers(3);
-  framebuffer.checkComplete();
-  framebuffer.bind();
-  const float zero[4] = {0, 0, 0, 0};
-  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, i, zero);
-  {
-    const gl::PipelineScope viewport({.viewport = gl::PixelRect{0, 0, width, height}});
-    drawSpecular(capture_);
-  }
-  const image::Image hit = gl::readTexture(hits, 4);
-  const image::Image ray = gl::readTexture(rays, 4);
+  const std::vector<image::Image> captured =
+      drawCaptured(width, height, 2, [&] { drawSpecular(capture_); });
+  const image::Image& hit = captured[1];
+  const image::Image& ray = captured[2];
   const image::Image origin = gl::readTexture(surface_lighting_.gbuffer().position(), 4);
 
   // The true first hit of each traced ray among what its map holds: everything but its object.
@@ -156,25 +142,10 @@ std::vector<AuxiliaryImage> DistanceMapSpecularTechnique::auxiliaryImages() {
                     "the search's geometric error (scene units): from the hit it found to the "
                     "first hit on the same ray (Embree), 0 off the mirrors and glass",
                     searchError()});
-  // The maps as the book's Fig. 6.3 shows one: object k's faces +x −x +y −y +z −z in row k.
-  const gl::Texture& maps = maps_->maps();
-  const int n = maps.width(), cubes = maps.depth() / 6;
-  std::vector<float> texels(std::size_t(n) * n * 6 * cubes * 4);
-  glGetTextureImage(maps.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
-                    texels.data());
-  image::Image strip(6 * n, cubes * n, 3);
-  for (int layer = 0; layer < 6 * cubes; ++layer)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const float* texel = &texels[((std::size_t(layer) * n + j) * n + i) * 4];
-        // Texel row j counts from the bottom (cube_faces.h); the image's from the top.
-        float* out = strip.pixel((layer % 6) * n + i, (layer / 6) * n + (n - 1 - j));
-        for (int c = 0; c < 3; ++c) out[c] = texel[c];
-      }
   images.push_back({"maps",
                     "the distance maps' radiance, one object per row, faces +x −x +y −y "
                     "+z −z",
-                    std::move(strip)});
+                    unfoldCubes(maps_->maps())});
   return images;
 }
 
