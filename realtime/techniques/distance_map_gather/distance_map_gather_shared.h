@@ -45,6 +45,14 @@ const int kIrradianceGroupSize = 8;
 // some of its texels: a light at infinity, seen from x in the same direction and solid angle.
 const float kGatherSkyDistance = 1.0e20f;
 
+// visibility=true: a shadow ray leaves the shaded point this fraction of the scene's diagonal off
+// its surface along the normal, and stops this fraction of its length short of the texel's mean
+// point: that point averages the distances of the texel's surfaces and lies in front of or behind
+// them (inside the emitting cube of the tests, a stop 2% short still met the texel's own wall, 10%
+// short did not), so an occluder counts when it is nearer than three quarters of the way.
+const float kGatherRayOffsetFraction = 1.0e-4f;
+const float kGatherRayShortfall = 0.25f;
+
 // glossy_peak_only: a texel is gathered when the Phong lobe cosⁿα in its direction is at least
 // this fraction of the lobe's peak (n = 5: α ≤ 50.9°).
 const float kGlossyPeakFraction = 0.1f;

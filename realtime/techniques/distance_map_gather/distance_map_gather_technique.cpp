@@ -7,11 +7,14 @@
 #include "realtime/gl/pipeline_state.h"
 #include "realtime/gl/shader_library.h"
 #include "realtime/gpu_scene/gpu_scene.h"
+#include "realtime/ray_casting/ivm_triangles.h"
+#include "realtime/ray_casting/ray_structures.h"
 #include "realtime/render_target.h"
 #include "realtime/techniques/distance_map_gather/distance_map_gather_shared.h"
 #include "scene/path_expression.h"
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include <memory>
 #include <string>
@@ -51,6 +54,7 @@ DistanceMapGatherTechnique::DistanceMapGatherTechnique(const ParameterValues& p)
       solid_angle_(p.text("solid_angle") == "polygon" ? gpu::kSolidAnglePolygon
                                                       : gpu::kSolidAngleDisc),
       peak_only_(p.boolean("glossy_peak_only")),
+      visibility_(p.boolean("visibility")),
       reference_point_(p.text("reference_point") == "scene_centre"
                            ? ReferencePoint::kSceneCentre
                            : ReferencePoint::kObjectCentre) {}
@@ -100,8 +104,24 @@ void DistanceMapGatherTechnique::prepare(const GpuScene& scene, int width, int h
     // The gather reads no irradiance map, but its sampler needs a complete texture.
     irradiance_ = cubeArray(1, 2, GL_NEAREST);
   }
-  gather_ = gl::FullScreenPass(kGatherShader);
-  capture_ = gl::FullScreenPass(kGatherShader, "#define CAPTURE_GATHER 1\n");
+  std::string defines;
+  glm::vec3 set_origin(0.0f);
+  if (visibility_) {
+    // Every triangle: the object hides texels from itself (a torus's hole) as the walls do.
+    const IvmTriangleSet set = buildIvmTriangles(scene.scene());
+    structure_ = makeGpuRayStructure("bvh", set);
+    set_origin = glm::vec3(set.origin);
+    defines = structure_->castDefines() + "#define GATHER_VISIBILITY 1\n";
+  }
+  gather_ = gl::FullScreenPass(kGatherShader, defines);
+  capture_ = gl::FullScreenPass(kGatherShader, defines + "#define CAPTURE_GATHER 1\n");
+  if (visibility_) {
+    const float diagonal = glm::length(scene.boundsMax() - scene.boundsMin());
+    for (const gl::FullScreenPass* pass : {&gather_, &capture_}) {
+      pass->program().set("u_set_origin", set_origin);
+      pass->program().set("u_ray_offset", gpu::kGatherRayOffsetFraction * diagonal);
+    }
+  }
 }
 
 void DistanceMapGatherTechnique::render(Frame& frame) {
@@ -145,6 +165,7 @@ void DistanceMapGatherTechnique::drawGather(const gl::FullScreenPass& pass) cons
   surface_lighting_.gbuffer().albedo().bind(gpu::kDistanceMapCodeUnit);
   low_res_.bind(gpu::kLowResMapUnit);
   irradiance_.bind(gpu::kIrradianceMapUnit);
+  if (structure_) structure_->bind();
   // Replaces what SurfaceLighting wrote at the object's pixels; the caller's scope has no
   // blending.
   pass.draw();
@@ -221,6 +242,9 @@ TechniqueInfo distanceMapGatherTechniqueInfo() {
         booleanParameter("glossy_peak_only", false,
                          "a Phong object gathers only the texels where its lobe is at least 10% "
                          "of its peak (the book's Fig. 7.10, lower row)"),
+        booleanParameter("visibility", false,
+                         "cast a shadow ray through a GPU BVH from the shaded point to each "
+                         "texel's surface (the book tests none: this measures what that costs)"),
         choiceParameter("reference_point", "object_centre", {"object_centre", "scene_centre"},
                         "where the map is taken from: the object's centre, or the centre of the "
                         "scene")},

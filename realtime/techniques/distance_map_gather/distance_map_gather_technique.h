@@ -13,8 +13,10 @@
 #include "realtime/gl/fullscreen_pass.h"
 #include "realtime/gl/objects.h"
 #include "realtime/lighting/surface_lighting.h"
+#include "realtime/ray_casting/gpu_ray_structure.h"
 #include "realtime/technique.h"
 
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -48,6 +50,10 @@ class DistanceMapGatherTechnique final : public Technique {
   SurfaceLighting surface_lighting_;
   int object_parameter_, resolution_, gather_size_, mode_, solid_angle_;
   bool peak_only_;
+  // visibility=true: the scene's triangles in a BVH (realtime/ray_casting/) that the gather casts
+  // a shadow ray through per texel, to measure what the book's omission of the test costs.
+  bool visibility_;
+  std::unique_ptr<GpuRayStructure> structure_;
   ReferencePoint reference_point_;
   const GpuScene* scene_ = nullptr;
   std::optional<DistanceMaps> maps_;

@@ -5,7 +5,8 @@
 // distance_map: every texel of the downsampled map is an area light of the texel's mean radiance
 // at its mean distance from o, y = o + L/|L|·distance; its solid angle ω′ from o (eq. 7.7 or 7.6)
 // is carried to ω* at x, and it is reflected by the object's BRDF (brdf.glsl: the project's
-// normalised Phong, not the book's Blinn-Phong) with cos⁺ at x and no visibility test.
+// normalised Phong, not the book's Blinn-Phong) with cos⁺ at x and no visibility test (with
+// GATHER_VISIBILITY, visibility=true, a shadow ray through the scene's BVH to each texel's point).
 // irradiance_map: the diffuse irradiance map looked up by the normal, the glossy one by the
 // mirror direction R (times cos⁺ at x in direction R, the lobe's peak).
 // With CAPTURE_GATHER it also writes the texels each pixel gathered (the `gather` image).
@@ -13,6 +14,18 @@
 #include "realtime/gbuffer/gbuffer_maps.glsl"
 #include "realtime/gpu_scene/brdf.glsl"
 #include "realtime/techniques/distance_map_gather/distance_map_gather_shared.h"
+#ifdef GATHER_VISIBILITY
+#include "realtime/ray_casting/cast_ray.glsl"
+uniform vec3 u_set_origin;   // IvmTriangleSet::origin: rays are cast relative to it
+uniform float u_ray_offset;  // kGatherRayOffsetFraction of the scene's diagonal
+
+// Whether anything lies between x and the texel's surface (or, for the sky, on the way out).
+bool gatherOccluded(vec3 x, vec3 n, vec3 wi, float distance, bool sky) {
+  vec3 origin = x + n * u_ray_offset;
+  float reach = sky ? kRayInfinity : distance * (1.0 - kGatherRayShortfall);
+  return castRay(origin - u_set_origin, wi, 0.0, reach).t < reach;
+}
+#endif
 
 layout(binding = kDistanceMapCodeUnit) uniform sampler2D u_codes;  // the camera's GBuffer::albedo
 layout(binding = kLowResMapUnit) uniform samplerCubeArray u_low_res;
@@ -71,6 +84,10 @@ void main() {
           vec3 wi = sky ? direction : to_light / shaded_distance;
           // glossy_peak_only: only the texels inside the lobe (the book's Fig. 7.10, lower row).
           if (peak_only && dot(mirror, wi) < peak_cosine) continue;
+#ifdef GATHER_VISIBILITY
+          // Not the book's: what its omission of this test costs (visibility=true).
+          if (dot(n, wi) <= 0.0 || gatherOccluded(x, n, wi, shaded_distance, sky)) continue;
+#endif
           // ω′ from o, then ω* from x.
           float omega = texelSolidAngle(texel_distance, u_size, u_solid_angle);
           float omega_x =
