@@ -249,12 +249,8 @@ TEST(DistanceMapGatherTechnique, BeatsTheIrradianceMapAwayFromTheReferencePoint)
   const scene::PathClass path_class = scene::PathClass::ofExpression(
       scene::PathExpression::parse(std::string(kDistanceMapGatherPathExpression)).text());
   EXPECT_EQ(distance.path_class, path_class);
-  ref::RenderSettings settings;
-  settings.width = settings.height = size;
-  settings.spp = 256;
-  settings.path_class = path_class;
-  settings.pixel_sampling = ref::PixelSampling::kCenter;
-  const ref::RenderResult reference = ref::renderReference(scene, settings);
+  const ref::RenderResult reference =
+      test::renderCentreClassReference(scene, size, 256, path_class);
 
   const image::Image& mask = distance.auxiliary.at(0).image;  // the sphere's pixels
   double difference = 0, variance = 0, error_distance = 0, error_irradiance = 0, truth = 0;

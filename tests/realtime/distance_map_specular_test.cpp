@@ -503,12 +503,8 @@ TEST(DistanceMapSpecularTechnique, TheMirrorMatchesTheReferenceOfItsClassBetterW
   const scene::Scene scene = scene::loadScene("cornell", {"spheres=mirror"});
   const scene::PathClass path_class = scene::PathClass::ofExpression(
       scene::PathExpression::parse(distanceMapSpecularPathExpression(1)).text());
-  ref::RenderSettings reference_settings;
-  reference_settings.width = reference_settings.height = kSize;
-  reference_settings.spp = 64;
-  reference_settings.path_class = path_class;
-  reference_settings.pixel_sampling = ref::PixelSampling::kCenter;
-  const ref::RenderResult reference = ref::renderReference(scene, reference_settings);
+  const ref::RenderResult reference =
+      test::renderCentreClassReference(scene, kSize, 64, path_class);
   const std::vector<int> pixels = pixelsOf(scene, kSize, scene::MaterialType::kMirror);
   ASSERT_GT(pixels.size(), 60u);
 

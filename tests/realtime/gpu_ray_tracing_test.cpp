@@ -195,12 +195,8 @@ TEST(GpuRayTracingTechnique, TheSpheresMatchTheReferenceOfTheirClass) {
   const scene::PathClass path_class = scene::PathClass::ofExpression(
       scene::PathExpression::parse(gpuRayTracingPathExpression(4)).text());
   EXPECT_EQ(r.path_class, path_class);
-  ref::RenderSettings settings;
-  settings.width = settings.height = size;
-  settings.spp = 256;
-  settings.path_class = path_class;
-  settings.pixel_sampling = ref::PixelSampling::kCenter;
-  const ref::RenderResult reference = ref::renderReference(scene, settings);
+  const ref::RenderResult reference =
+      test::renderCentreClassReference(scene, size, 256, path_class);
 
   const std::vector<Sphere> spheres = specularSpheres(scene);
   ASSERT_EQ(spheres.size(), 2u);

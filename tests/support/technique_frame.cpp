@@ -41,13 +41,30 @@ rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::stri
   return rt::runTechnique(scene, info, values, settings);
 }
 
-ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
-                                       scene::PathClass path_class, std::uint32_t replicas) {
+namespace {
+
+ref::RenderSettings classReferenceSettings(int size, std::uint32_t spp,
+                                           scene::PathClass path_class) {
   ref::RenderSettings settings;
   settings.width = settings.height = size;
   settings.spp = spp;
-  settings.replicas = replicas;
   settings.path_class = path_class;
+  return settings;
+}
+
+}  // namespace
+
+ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
+                                       scene::PathClass path_class, std::uint32_t replicas) {
+  ref::RenderSettings settings = classReferenceSettings(size, spp, path_class);
+  settings.replicas = replicas;
+  return ref::renderReference(scene, settings);
+}
+
+ref::RenderResult renderCentreClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
+                                             scene::PathClass path_class) {
+  ref::RenderSettings settings = classReferenceSettings(size, spp, path_class);
+  settings.pixel_sampling = ref::PixelSampling::kCenter;
   return ref::renderReference(scene, settings);
 }
 

@@ -24,6 +24,10 @@ rt::TechniqueRunResult renderOneFrame(const scene::Scene& scene, const std::stri
 // the variance layer more degrees of freedom at the same cost.
 ref::RenderResult renderClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
                                        scene::PathClass path_class, std::uint32_t replicas = 0);
+// The same through the pixel centres (ref::PixelSampling::kCenter), what a harness job measures a
+// technique against (docs/rendering.md, "Pixel sampling").
+ref::RenderResult renderCentreClassReference(const scene::Scene& scene, int size, std::uint32_t spp,
+                                             scene::PathClass path_class);
 
 // The value of the statistic `name` among a run's or a technique's `statistics`; a test failure,
 // and NaN (which no comparison passes), when there is none: a statistic that went missing must
