@@ -94,6 +94,7 @@ DistanceMaps::DistanceMaps(const GpuScene& scene, std::vector<DistanceMapObject>
     maps.setWrap(GL_CLAMP_TO_EDGE);
   }
   block_ = gl::Buffer(sizeof(gpu::DistanceMapBlock), nullptr);
+  writeBlock();
   compose_ = gl::buildProgram({{GL_COMPUTE_SHADER, "realtime/distance_map/compose.comp.glsl"}});
   downsample_ =
       gl::buildProgram({{GL_COMPUTE_SHADER, "realtime/distance_map/downsample.comp.glsl"}});
@@ -115,7 +116,7 @@ void DistanceMaps::clearLight() const {
   light_->clear(0, 0, 0);
 }
 
-void DistanceMaps::writeBlock() const {
+void DistanceMaps::writeBlock() {
   gpu::DistanceMapBlock block{};
   for (std::size_t k = 0; k < objects_.size(); ++k)
     block.objects[k] = {glm::vec4(objects_[k].reference_point, 1.0f),
@@ -127,7 +128,6 @@ void DistanceMaps::writeBlock() const {
 }
 
 void DistanceMaps::bind() const {
-  writeBlock();
   maps().bind(gpu::kDistanceMapUnit);
   block_.bindBase(GL_UNIFORM_BUFFER, gpu::kDistanceMapObjectsBinding);
 }

@@ -69,7 +69,10 @@ class DistanceMaps {
 
   const std::vector<DistanceMapObject>& objects() const { return objects_; }
   int resolution() const { return resolution_; }
-  void setSearch(const DistanceMapSearch& search) { search_ = search; }
+  void setSearch(const DistanceMapSearch& search) {
+    search_ = search;
+    writeBlock();
+  }
 
   // Rasterises every map's six views (each without its own object) into the views' G-buffer.
   void rasterise(const GpuScene& scene);
@@ -91,7 +94,8 @@ class DistanceMaps {
   void downsample(const gl::Texture& destination) const;
 
  private:
-  void writeBlock() const;
+  // The objects' block, written when the objects or the search change, not per pass.
+  void writeBlock();
 
   std::vector<DistanceMapObject> objects_;
   int resolution_;
@@ -101,7 +105,7 @@ class DistanceMaps {
   std::optional<RenderTarget> light_;
   gl::Texture maps_[2];
   int current_ = 0;
-  mutable gl::Buffer block_;  // rewritten before every pass that reads the maps
+  gl::Buffer block_;
   gl::Program compose_, downsample_;
 };
 
