@@ -22,5 +22,6 @@ CommandRunner addExportBlenderCommand(CLI::App& app);
 CommandRunner addMergeCommand(CLI::App& app);
 CommandRunner addSolidAngleBenchCommand(CLI::App& app);
 CommandRunner addRaycastBenchCommand(CLI::App& app);
+CommandRunner addSkyCommand(CLI::App& app);
 
 }  // namespace gib::cli

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   add(&gib::cli::addMergeCommand, "merge");
   add(&gib::cli::addSolidAngleBenchCommand, "solid-angle-bench");
   add(&gib::cli::addRaycastBenchCommand, "raycast-bench");
+  add(&gib::cli::addSkyCommand, "sky");
 
   // CLI11 reports a mistyped command as "A subcommand is required", which does not name it.
   if (argc > 1 && argv[1][0] != '-') {
