@@ -1,5 +1,7 @@
 #include "realtime/sh/spherical_harmonics.h"
 
+#include "realtime/sh/sh_basis.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -52,23 +54,13 @@ double zonalFactor(int l, const std::function<double(double)>& lobe) {
 }  // namespace
 
 std::array<float, kShMaxCoefficients> evaluateBasis(const glm::vec3& d) {
-  const float x = d.x, y = d.y, z = d.z;
-  return {0.282094792f,                             // l = 0
-          0.488602512f * y,                         // l = 1, m = −1
-          0.488602512f * z,                         //        m = 0
-          0.488602512f * x,                         //        m = 1
-          1.092548431f * x * y,                     // l = 2, m = −2
-          1.092548431f * y * z,                     //        m = −1
-          0.315391565f * (3 * z * z - 1),           //        m = 0
-          1.092548431f * x * z,                     //        m = 1
-          0.546274215f * (x * x - y * y),           //        m = 2
-          0.590043589f * y * (3 * x * x - y * y),   // l = 3, m = −3
-          2.890611442f * x * y * z,                 //        m = −2
-          0.457045799f * y * (5 * z * z - 1),       //        m = −1
-          0.373176333f * z * (5 * z * z - 3),       //        m = 0
-          0.457045799f * x * (5 * z * z - 1),       //        m = 1
-          1.445305721f * z * (x * x - y * y),       //        m = 2
-          0.590043589f * x * (x * x - 3 * y * y)};  //        m = 3
+  // The general basis (sh_basis.h) in double, rounded once: within float rounding of Sloan's
+  // hand-expanded table that the GLSL basis keeps (spherical_harmonics.glsl).
+  std::array<double, kShMaxCoefficients> y{};
+  evaluateShBasis(glm::dvec3(d), kShMaxBand + 1, y);
+  std::array<float, kShMaxCoefficients> result{};
+  for (std::size_t i = 0; i < y.size(); ++i) result[i] = float(y[i]);
+  return result;
 }
 
 glm::vec3 cubeTexelDirection(int face, int i, int j, int size) {

@@ -24,7 +24,8 @@ using gpu::kShMaxBand;
 using gpu::kShMaxCoefficients;
 using gpu::shCoefficientCount;
 
-// Y_i(d) for i < kShMaxCoefficients, d a unit vector.
+// Y_i(d) for i < kShMaxCoefficients, d a unit vector: the general basis (sh_basis.h) cut to
+// bands 0..3.
 std::array<float, kShMaxCoefficients> evaluateBasis(const glm::vec3& d);
 
 // Cube-map conventions of OpenGL (faces +x, −x, +y, −y, +z, −z; texel (i, j) with i along s and
