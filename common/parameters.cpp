@@ -29,6 +29,8 @@ const char* typeName(ParameterType type) {
       return "boolean";
     case ParameterType::kIntegerChoice:
       return "integer choice";
+    case ParameterType::kText:
+      return "text";
   }
   return "?";
 }
@@ -40,6 +42,7 @@ bool hasChoices(ParameterType type) {
 
 std::string rangeText(const ParameterSpec& spec) {
   if (hasChoices(spec.type)) return joinNames(spec.choices, "|");
+  if (spec.type == ParameterType::kText) return "any text";
   return fmt::format("[{}, {}]{}{}", spec.min, spec.max, spec.unit.empty() ? "" : " ", spec.unit);
 }
 
@@ -67,6 +70,9 @@ std::string canonicalValue(const ParameterSpec& spec, const std::string& text,
       for (const std::string& c : spec.choices)
         if (c == text) return text;
       throw bad("is not one of the choices");
+    case ParameterType::kText:
+      if (text.empty()) throw bad("is empty");
+      return text;
     case ParameterType::kInteger: {
       double v = 0;
       if (!parseDouble(text, v) || v != std::floor(v)) throw bad("is not an integer");
@@ -123,6 +129,15 @@ ParameterSpec choiceParameter(std::string name, std::string default_value,
   spec.type = ParameterType::kChoice;
   spec.default_value = std::move(default_value);
   spec.choices = std::move(choices);
+  spec.doc = std::move(doc);
+  return spec;
+}
+
+ParameterSpec textParameter(std::string name, std::string default_value, std::string doc) {
+  ParameterSpec spec;
+  spec.name = std::move(name);
+  spec.type = ParameterType::kText;
+  spec.default_value = std::move(default_value);
   spec.doc = std::move(doc);
   return spec;
 }

@@ -14,8 +14,9 @@
 namespace gib {
 
 // kBoolean is written "true" or "false"; kIntegerChoice is an integer from a list ("64", "128",
-// …: an atlas resolution), read with integer().
-enum class ParameterType { kInteger, kNumber, kVector3, kChoice, kBoolean, kIntegerChoice };
+// …: an atlas resolution), read with integer(); kText is any non-empty text (a file's path, or a
+// keyword the reader checks itself), read with text().
+enum class ParameterType { kInteger, kNumber, kVector3, kChoice, kBoolean, kIntegerChoice, kText };
 
 struct ParameterSpec {
   std::string name;
@@ -37,6 +38,8 @@ ParameterSpec choiceParameter(std::string name, std::string default_value,
                               std::vector<std::string> choices, std::string doc);
 // A switch, "true" or "false".
 ParameterSpec booleanParameter(std::string name, bool default_value, std::string doc);
+// Free text (a file's path); the code that reads it checks what it names.
+ParameterSpec textParameter(std::string name, std::string default_value, std::string doc);
 // An integer from a list (a power-of-two resolution).
 ParameterSpec integerChoiceParameter(std::string name, int default_value, std::vector<int> choices,
                                      std::string unit, std::string doc);

@@ -46,6 +46,7 @@ PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class, bool lig
       density_(scene.medium.particles),
       has_sky_(maxComponent(scene.sky_radiance) > 0) {
   if (!density_.empty()) medium_.emplace(density_);
+  if (!scene.environment.empty()) environment_.emplace(scene.environment);
 }
 
 float PathTracer::segmentTransmittance(const glm::vec3& origin, const glm::vec3& target,
@@ -114,6 +115,24 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
       if (transmittance > 0)
         result += f * scene_.sky_radiance *
                   (transmittance * powerHeuristic(pdf_sky, v.pdf(wi)) / pdf_sky);
+    }
+  }
+
+  // Environment map: a direction drawn by the map's luminance (the sky's dimensions: a scene has
+  // a constant sky or a map, never both), weighted against BSDF or phase sampling.
+  if (environment_ && !environment_->black()) {
+    const scene::EnvironmentSample s =
+        environment_->sample(sampler.get2D(VertexDimension::kSkyDirection));
+    const Rgb f = s.pdf > 0 ? v.evaluate(s.direction) : Rgb(0.0f);
+    if (maxComponent(f) > 0 && maxComponent(s.radiance) > 0) {
+      const float transmittance =
+          rayTransmittance(origin, s.direction,
+                           walkRandom(has_medium, sampler,
+                                      [&] { return sampler.get1D(VertexDimension::kSkyShadow); }),
+                           rays);
+      if (transmittance > 0)
+        result +=
+            f * s.radiance * (transmittance * powerHeuristic(s.pdf, v.pdf(s.direction)) / s.pdf);
     }
   }
 
@@ -213,6 +232,12 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
                 : powerHeuristic(previous_pdf,
                                  skySamplingPdf(previous_in_medium, previous_normal, direction));
         record(state, bounces, throughput * scene_.sky_radiance * weight);
+      }
+      if (environment_) {
+        const float weight = bounces == 0 || previous_specular
+                                 ? 1.0f
+                                 : powerHeuristic(previous_pdf, environment_->pdf(direction));
+        record(state, bounces, throughput * scene_.environment.radiance(direction) * weight);
       }
       break;
     } else {

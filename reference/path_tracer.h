@@ -14,6 +14,7 @@
 #include "reference/path_sampler.h"
 #include "reference/scattering_vertex.h"
 #include "reference/triangle_table.h"
+#include "scene/environment_distribution.h"
 #include "scene/medium.h"
 #include "scene/path_class.h"
 #include "scene/path_expression.h"
@@ -84,6 +85,8 @@ class PathTracer {
   scene::DensityGrid density_;
   std::optional<MediumTracker> medium_;
   bool has_sky_;
+  // The environment map's importance distribution, when the scene has a map.
+  std::optional<scene::EnvironmentDistribution> environment_;
 };
 
 }  // namespace gib::ref

@@ -197,6 +197,37 @@ std::vector<std::string> phongWarnings(const Scene& scene) {
 // A path tracer finds light only by hitting an emitter or by a shadow ray to it; from a spot or
 // sun lamp of zero size, light that a mirror or glass reflected or refracted onto a surface (a
 // caustic, L S+ D E) arrives by neither: Cycles cannot render it, GI Bench's light tracing can.
+// The environment map: its texels bottom row first (a Blender image's first row is its bottom),
+// RGBA, and the rotation that turns a world direction w into the vector Blender's equirectangular
+// lookup needs. Blender reads u = ½ − atan2(D.y, D.x)/2π and v = ½ + asin(D.z)/π (z up, v = 0 at
+// the bottom; Cycles' direction_to_equirectangular); GI Bench reads u = atan2(m.z, m.x)/2π and
+// θ = acos(m.y) from the top (scene/environment_map.h) of the map direction
+// m = R_y(−rotation) w. The two agree for D = (−m.x, m.z, m.y), a half turn about z after a
+// quarter turn about x. Looked up at the nearest texel ("Closest"), the
+// map is the piecewise-constant light the reference integrates.
+std::string environmentEntry(const Scene& scene) {
+  const EnvironmentMap& map = scene.environment;
+  if (map.empty()) return "None";
+  const glm::vec3 ex = map.toMap({1, 0, 0}), ey = map.toMap({0, 1, 0}), ez = map.toMap({0, 0, 1});
+  // Columns: the images of the world's axes.
+  const auto row = [&](auto component) {
+    return fmt::format("[{}, {}, {}]", number(component(ex)), number(component(ey)),
+                       number(component(ez)));
+  };
+  std::string texels;
+  texels.reserve(std::size_t(map.width) * std::size_t(map.height) * 4 * 12);
+  for (int y = map.height - 1; y >= 0; --y)
+    for (int x = 0; x < map.width; ++x) {
+      const Rgb t = map.texel(x, y);
+      texels += fmt::format("{},{},{},1,", number(t.r), number(t.g), number(t.b));
+    }
+  return fmt::format(
+      "{{\"width\": {}, \"height\": {}, \"strength\": {},\n"
+      "        \"matrix\": [{}, {}, {}],\n        \"pixels\": [{}]}}",
+      map.width, map.height, number(map.intensity), row([](glm::vec3 v) { return -v.x; }),
+      row([](glm::vec3 v) { return v.z; }), row([](glm::vec3 v) { return v.y; }), texels);
+}
+
 std::vector<std::string> deltaCausticWarnings(const Scene& scene) {
   const auto lit = [](const auto& lights, auto power) {
     return std::any_of(lights.begin(), lights.end(),
@@ -275,7 +306,8 @@ BlenderExport exportBlenderScript(const Scene& scene, const BlenderExportSetting
   for (const Mesh& mesh : scene.meshes) data += meshEntry(mesh);
   data += "    ],\n    \"spot_lamps\": [\n" + spots + "    ],\n    \"sun_lamps\": [\n";
   data += sunEntries(scene);
-  data += fmt::format("    ],\n    \"sky\": {},\n}}\n\n", vec(scene.sky_radiance));
+  data += fmt::format("    ],\n    \"sky\": {},\n    \"environment\": {},\n}}\n\n",
+                      vec(scene.sky_radiance), environmentEntry(scene));
 
   const EmbeddedFile* builder =
       findEmbeddedFile(embeddedBlenderBuilder(), "scene/blender_scene.py");

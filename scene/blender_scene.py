@@ -286,12 +286,32 @@ def make_lamps(scene, spec):
         scene.collection.objects.link(obj)
 
 
-def make_world(scene, sky):
+def make_world(scene, sky, environment=None):
     world = bpy.data.worlds.new("world")
     world.use_nodes = True
     background = world.node_tree.nodes["Background"]
     background.inputs["Color"].default_value = rgba(sky)
     background.inputs["Strength"].default_value = 1.0
+    if environment is not None:
+        # The map as a float image, looked up at the nearest texel through the rotation the
+        # exporter computed (blender_export.cpp, environmentEntry), scaled by its intensity.
+        image = bpy.data.images.new("environment", environment["width"], environment["height"],
+                                    float_buffer=True, alpha=True)
+        image.colorspace_settings.name = "Non-Color"  # linear Rec.709 as written
+        image.pixels.foreach_set(environment["pixels"])
+        nodes, links = world.node_tree.nodes, world.node_tree.links
+        coordinates = nodes.new("ShaderNodeTexCoord")
+        mapping = nodes.new("ShaderNodeMapping")
+        mapping.vector_type = "VECTOR"
+        mapping.inputs["Rotation"].default_value = Matrix(environment["matrix"]).to_euler("XYZ")
+        texture = nodes.new("ShaderNodeTexEnvironment")
+        texture.image = image
+        texture.interpolation = "Closest"
+        texture.projection = "EQUIRECTANGULAR"
+        links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
+        links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
+        links.new(texture.outputs["Color"], background.inputs["Color"])
+        background.inputs["Strength"].default_value = environment["strength"]
     scene.world = world
 
 
@@ -376,7 +396,7 @@ def main():
         make_mesh(scene, spec, materials)
     make_camera(scene, SCENE["camera"])  # noqa: F821
     make_lamps(scene, SCENE)  # noqa: F821
-    make_world(scene, SCENE["sky"])  # noqa: F821
+    make_world(scene, SCENE["sky"], SCENE["environment"])  # noqa: F821
     configure_render(scene, render, out)
     bpy.ops.render.render(write_still=True)
     if not os.path.isfile(out):

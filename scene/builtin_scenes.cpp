@@ -45,6 +45,12 @@ const std::vector<BuiltinScene>& registry() {
         "dragon, after Szirmay-Kalos et al. §7.3, Figs. 7.10-7.13",
         roomParameters()},
        &makeRoom},
+      {{"outdoor",
+        "a ground plane with a diffuse, a glossy, a mirror and a glass sphere and a torus (the "
+        "last mesh) under the Preetham clear sky or a latitude-longitude EXR, after Szirmay-Kalos "
+        "et al. §4.2 and §8.3",
+        outdoorParameters()},
+       &makeOutdoor},
   };
   return scenes;
 }

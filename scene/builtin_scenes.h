@@ -35,5 +35,7 @@ Scene makeCloud(const ParameterValues& parameters);
 ParameterTable cloudParameters();
 Scene makeRoom(const ParameterValues& parameters);
 ParameterTable roomParameters();
+Scene makeOutdoor(const ParameterValues& parameters);
+ParameterTable outdoorParameters();
 
 }  // namespace gib::scene

@@ -31,6 +31,10 @@ bool Scene::hasIdealSpecular() const {
   return false;
 }
 
+bool Scene::hasEnvironmentLight() const {
+  return sky_radiance != Rgb(0.0f) || !environment.empty();
+}
+
 std::size_t Scene::triangleCount() const {
   std::size_t count = 0;
   for (const Mesh& mesh : meshes) count += mesh.triangles.size();
@@ -158,6 +162,12 @@ void validateScene(const Scene& scene) {
     validateRgb(l.irradiance, "directional light irradiance");
   }
   validateRgb(scene.sky_radiance, "sky radiance");
+  if (!scene.environment.empty()) {
+    require(scene.sky_radiance == Rgb(0.0f),
+            "a scene has one environment: give a constant sky radiance or an environment map, "
+            "not both");
+    validateEnvironmentMap(scene.environment);
+  }
   validateRgb(scene.medium.albedo, "medium albedo");
   for (int c = 0; c < 3; ++c)
     require(scene.medium.albedo[c] <= 1.0f,
@@ -225,6 +235,17 @@ std::string hashScene(const Scene& scene) {
     addVec(l.irradiance);
   }
   addVec(scene.sky_radiance);
+  // An environment map only when there is one (a tagged section: scenes without one hash as
+  // before).
+  if (!scene.environment.empty()) {
+    const EnvironmentMap& map = scene.environment;
+    h.addString("environment map");
+    h.addU64(std::uint64_t(map.width));
+    h.addU64(std::uint64_t(map.height));
+    h.addFloats(*map.texels);
+    h.addFloat(map.rotation_deg);
+    h.addFloat(map.intensity);
+  }
   h.addU64(scene.medium.particles.size());
   for (const MediumParticle& p : scene.medium.particles) {
     addVec(p.centre);

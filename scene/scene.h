@@ -5,6 +5,7 @@
 #pragma once
 
 #include "common/luminance_shared.h"
+#include "scene/environment_map.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -145,6 +146,9 @@ struct Scene {
   std::vector<SpotLight> spot_lights;
   std::vector<DirectionalLight> directional_lights;
   Rgb sky_radiance{0.0f};  // constant radiance of rays that leave the scene
+  // Or the radiance of a latitude–longitude map in their direction (book §4.2); a scene has at
+  // most one of the two (validateScene).
+  EnvironmentMap environment;
   Medium medium;
   int default_width = 512;
   int default_height = 512;
@@ -153,6 +157,8 @@ struct Scene {
   bool hasEmissiveTriangles() const;
   // Whether any mesh with triangles is a mirror or glass (isIdealSpecular).
   bool hasIdealSpecular() const;
+  // Whether light arrives from beyond the scene: a constant sky or an environment map.
+  bool hasEnvironmentLight() const;
 };
 
 // Throws gib::InputError naming the first problem (bad index, NaN, negative reflectance, energy

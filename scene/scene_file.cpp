@@ -119,6 +119,27 @@ Mesh readMesh(const TableReader& t, const fs::path& base_dir,
   return mesh;
 }
 
+// [environment]: a latitude–longitude EXR (its path relative to the scene file), turned by
+// `rotation` degrees about +y and scaled by `intensity` (scene/environment_map.h).
+EnvironmentMap readEnvironment(const TableReader& t, const fs::path& base_dir) {
+  const toml::node& file = t.require("file", "\"sky.exr\"");
+  const fs::path path = (base_dir / fs::path(t.string(file, "file"))).lexically_normal();
+  EnvironmentMap map;
+  try {
+    map = loadEnvironmentMap(path);
+  } catch (const InputError& e) {
+    t.errors().fail(file, e.what(),
+                    "give a latitude-longitude EXR twice as wide as high (`gibench sky` writes "
+                    "one)");
+  }
+  map.rotation_deg = static_cast<float>(t.optional("rotation", &TableReader::number, 0.0));
+  map.intensity = static_cast<float>(t.optional("intensity", &TableReader::number, 1.0));
+  if (map.intensity < 0)
+    t.errors().fail(*t.find("intensity"), fmt::format("{} must be >= 0", t.path("intensity")),
+                    "give a scale of the map's radiance, e.g. intensity = 1");
+  return map;
+}
+
 glm::vec3 readDirection(const TableReader& t) {
   const toml::node& node = t.require("direction", "[x, y, z]");
   const glm::vec3 direction = t.vec3(node, "direction");
@@ -176,8 +197,9 @@ void readLight(const TableReader& root, const toml::table& table, std::size_t i,
 Scene loadSceneFile(const std::filesystem::path& toml_path) {
   const ErrorReporter errors(toml_path.string());
   const toml::table document = parseTomlFile(errors, toml_path, "scene file");
-  const TableReader root(errors, document, "", "the top level of the scene file",
-                         {"name", "camera", "image", "materials", "meshes", "lights", "sky"});
+  const TableReader root(
+      errors, document, "", "the top level of the scene file",
+      {"name", "camera", "image", "materials", "meshes", "lights", "sky", "environment"});
 
   Scene scene;
   scene.name = root.optional("name", &TableReader::string, toml_path.stem().string());
@@ -207,6 +229,11 @@ Scene loadSceneFile(const std::filesystem::path& toml_path) {
                         {"radiance"});
     scene.sky_radiance = t.optional("radiance", &TableReader::rgb, Rgb(0.0f));
   }
+  if (const toml::node* node = root.find("environment"))
+    scene.environment = readEnvironment(
+        TableReader(errors, requireTable(errors, *node, "environment", "write [environment]"),
+                    "environment", "[environment]", {"file", "rotation", "intensity"}),
+        base_dir);
 
   // The model's own checks; the ones above already give positions for what a file can get wrong.
   try {

@@ -67,6 +67,11 @@
 //   [sky]                                 # optional
 //   radiance = [0.1, 0.1, 0.1]            # optional, default black
 //
+//   [environment]                         # optional; not with a [sky] of non-zero radiance
+//   file = "sky.exr"                      # latitude-longitude EXR, relative to this file
+//   rotation = 0.0                        # optional, degrees about +y from +x towards -z
+//   intensity = 1.0                       # optional, >= 0, scales the texels
+//
 // OBJ files: every face is triangulated; vertex positions are read, and the normals of `vn` lines
 // when the faces give them (f v//vn, f v/vt/vn) and `smooth` is true: then every face corner needs
 // a normal and a position used with different normals becomes one vertex per normal (exact, not

@@ -3,6 +3,7 @@
 // path class limited to one bounce the floor's radiance is ρ/π · E exactly.
 #include "reference/path_tracer.h"
 #include "scene/mesh_builder.h"
+#include "support/render_statistics.h"
 #include "support/statistical_test.h"
 
 #include <gtest/gtest.h>
@@ -56,28 +57,11 @@ double polygonIrradiance(const std::vector<glm::dvec3>& polygon, glm::dvec3 p, d
   return 0.5 * radiance * std::abs(sum);
 }
 
-struct Estimate {
-  double mean = 0;
-  double standard_error = 0;
-};
-
-// Mean and standard error of the luminance-free red channel over `samples` paths that hit the
-// floor at `p` from straight above.
-Estimate estimateFloorRadiance(const PathTracer& tracer, glm::vec3 p, std::uint32_t samples,
-                               std::uint32_t pixel_id) {
-  double sum = 0, sum_squares = 0;
-  for (std::uint32_t s = 0; s < samples; ++s) {
-    // One replica per sample: independent samples, so their spread gives the standard error.
-    PathSampler sampler(1234, pixel_id, s, samples);
-    RadianceSample r = tracer.radiance(p + glm::vec3(0, 0.25f, 0), {0, -1, 0}, sampler);
-    sum += r.total.r;
-    sum_squares += double(r.total.r) * r.total.r;
-  }
-  Estimate e;
-  e.mean = sum / samples;
-  double variance = (sum_squares - samples * e.mean * e.mean) / (samples - 1);
-  e.standard_error = std::sqrt(std::max(variance, 0.0) / samples);
-  return e;
+// The floor's radiance at `p` seen from straight above.
+test::MeanEstimate estimateFloorRadiance(const PathTracer& tracer, glm::vec3 p,
+                                         std::uint32_t samples, std::uint32_t pixel_id) {
+  return test::estimateRayRadiance(tracer, p + glm::vec3(0, 0.25f, 0), {0, -1, 0}, samples,
+                                   pixel_id);
 }
 
 TEST(AnalyticDirect, RectangularAreaLightMatchesLambertsFormula) {
@@ -103,7 +87,7 @@ TEST(AnalyticDirect, RectangularAreaLightMatchesLambertsFormula) {
       {0, 0, 0}, {0.4f, 0, 0.2f}, {1.5f, 0, 0.3f}, {-3, 0, 2}, {0.7f, 0, -0.6f}};
   for (std::size_t i = 0; i < points.size(); ++i) {
     double expected = kAlbedo / kPi * polygonIrradiance(polygon, points[i], 2.0);
-    Estimate e = estimateFloorRadiance(tracer, points[i], kSamples, std::uint32_t(i));
+    test::MeanEstimate e = estimateFloorRadiance(tracer, points[i], kSamples, std::uint32_t(i));
     EXPECT_TRUE(kFamily.tTest(e.mean, expected, e.standard_error, kSamples - 1)) << "point " << i;
     EXPECT_LT(e.standard_error, 0.02 * expected) << "the estimate should be informative";
   }
@@ -127,7 +111,7 @@ TEST(AnalyticDirect, SpotLightFollowsInverseSquareAndFalloff) {
     double cos_surface = cos_axis;  // the floor's normal is the axis reversed
     bool inside = cos_axis >= std::cos(glm::radians(double(spot.cone_angle_deg)));
     double irradiance = inside ? 10.0 * std::pow(cos_axis, 3) * cos_surface / (dist * dist) : 0;
-    Estimate e = estimateFloorRadiance(tracer, p, 16, 0);
+    test::MeanEstimate e = estimateFloorRadiance(tracer, p, 16, 0);
     // A delta light with one bounce is noise-free: only float rounding separates the two.
     EXPECT_NEAR(e.mean, kAlbedo / kPi * irradiance, 1e-5) << "point " << p.x << "," << p.z;
   }
@@ -140,7 +124,7 @@ TEST(AnalyticDirect, DirectionalLightGivesIrradianceTimesCosine) {
   sun.irradiance = scene::Rgb(3.0f);
   s.directional_lights.push_back(sun);
   const PathTracer tracer(s, PathClass{1, 1});
-  Estimate e = estimateFloorRadiance(tracer, {0.3f, 0, 0.1f}, 16, 0);
+  test::MeanEstimate e = estimateFloorRadiance(tracer, {0.3f, 0, 0.1f}, 16, 0);
   EXPECT_NEAR(e.mean, kAlbedo / kPi * 3.0 * -sun.direction.y, 1e-5);
 }
 
@@ -149,7 +133,7 @@ TEST(AnalyticDirect, ConstantSkyGivesAlbedoTimesSkyRadiance) {
   s.sky_radiance = scene::Rgb(0.8f);
   const PathTracer tracer(s, PathClass{1, 1});
   // E = π L on an unoccluded plane, so L_out = ρ/π · π L = ρ L.
-  Estimate e = estimateFloorRadiance(tracer, {0, 0, 0}, kSamples, 0);
+  test::MeanEstimate e = estimateFloorRadiance(tracer, {0, 0, 0}, kSamples, 0);
   EXPECT_TRUE(kFamily.tTest(e.mean, kAlbedo * 0.8, e.standard_error, kSamples - 1, 1e-6));
 }
 

@@ -14,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -270,6 +271,43 @@ TEST(BlenderExport, PhongExponentBecomesBeckmannRoughness) {
   EXPECT_DOUBLE_EQ(phongToBeckmannRoughness(0), 1.0);
   EXPECT_NEAR(phongToBeckmannRoughness(14), std::pow(0.125, 0.25), 1e-12);
   EXPECT_LT(phongToBeckmannRoughness(1000), 0.22);
+}
+
+TEST(BlenderExport, EnvironmentMapIsItsTexelsBottomRowFirstThroughTheAxisChange) {
+  Scene scene = loadScene("cornell");
+  EXPECT_THAT(exportBlenderScript(scene, smallSettings()).script,
+              HasSubstr("\"environment\": None"));
+  scene.sky_radiance = Rgb(0.0f);
+  // Texel (x, y) holds 10·y + x in red: rows 0 (up) and 1 (down) of a 4 × 2 map.
+  std::vector<float> texels;
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) texels.insert(texels.end(), {float(10 * y + x), 0.0f, 0.0f});
+  scene.environment = makeEnvironmentMap(4, 2, texels, "test");
+  scene.environment.intensity = 2.0f;
+  const std::string script = exportBlenderScript(scene, smallSettings()).script;
+  // Blender's first row is its bottom: GI Bench's row 1 (10..13) comes first.
+  EXPECT_THAT(script, HasSubstr("\"pixels\": [10,0,0,1,11,0,0,1,12,0,0,1,13,0,0,1,0,0,0,1,1,"));
+  EXPECT_THAT(script, HasSubstr("{\"width\": 4, \"height\": 2, \"strength\": 2,"));
+  // D = (−m.x, m.z, m.y): world +y (the map's up) becomes Blender's +z, and world +x, where
+  // GI Bench's u = 0 lies, becomes −x, where Blender's u = ½ − atan2(y, x)/2π is 0 too.
+  EXPECT_THAT(script, HasSubstr("\"matrix\": [[-1, 0, 0], [0, 0, 1], [0, 1, 0]]"));
+  // Turned by 90° (+x towards −z), world −z sees what the map holds at +x (Blender's −x) and
+  // world +x what it holds at −z (m.z = −1: Blender's −y).
+  scene.environment.rotation_deg = 90.0f;
+  const std::string turned = exportBlenderScript(scene, smallSettings()).script;
+  const std::size_t at = turned.find("\"matrix\": [[");
+  ASSERT_NE(at, std::string::npos);
+  float m[3][3];
+  ASSERT_EQ(
+      std::sscanf(turned.c_str() + at, "\"matrix\": [[%f, %f, %f], [%f, %f, %f], [%f, %f, %f]]",
+                  &m[0][0], &m[0][1], &m[0][2], &m[1][0], &m[1][1], &m[1][2], &m[2][0], &m[2][1],
+                  &m[2][2]),
+      9);
+  const float expected[3][3] = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(m[r][c], expected[r][c], 1e-6f) << r << "," << c;
+  const glm::vec3 minus_z = glm::vec3(m[0][2], m[1][2], m[2][2]) * -1.0f;
+  EXPECT_NEAR(minus_z.x, -1.0f, 1e-6f) << "world -z looks up Blender's -x";
 }
 
 TEST(BlenderExport, RefusesSettingsCyclesCannotTake) {

@@ -2,6 +2,7 @@
 
 #include "metrics/image_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -82,6 +83,24 @@ double relMseOfRelativeError(const image::Image& reference, const image::Image& 
     sum += e * e / (r * r + metrics::kRelativeEpsilon);
   }
   return sum / double(reference.data().size());
+}
+
+MeanEstimate estimateRayRadiance(const ref::PathTracer& tracer, const glm::vec3& origin,
+                                 const glm::vec3& direction, std::uint32_t samples,
+                                 std::uint32_t pixel_id) {
+  double sum = 0, sum_squares = 0;
+  for (std::uint32_t s = 0; s < samples; ++s) {
+    ref::PathSampler sampler(1234, pixel_id, s, samples);
+    const double r = tracer.radiance(origin, direction, sampler).total.r;
+    sum += r;
+    sum_squares += r * r;
+  }
+  MeanEstimate e;
+  e.mean = sum / samples;
+  const double variance = (sum_squares - samples * e.mean * e.mean) / (samples - 1);
+  e.standard_error = std::sqrt(std::max(variance, 0.0) / samples);
+  e.dof = samples - 1;
+  return e;
 }
 
 }  // namespace gib::test

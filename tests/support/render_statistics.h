@@ -3,6 +3,7 @@
 // needs under Student's t, and relMSE less the noise of the images compared.
 #pragma once
 
+#include "reference/path_tracer.h"
 #include "reference/progressive_renderer.h"
 
 #include <limits>
@@ -56,5 +57,13 @@ MeanEstimate relMseLessNoise(const ref::RenderResult& reference, const image::Im
 // say).
 double relMseOfRelativeError(const image::Image& reference, const image::Image& part,
                              double relative_error);
+
+// The mean red radiance of `samples` independent paths from `origin` along `direction` (no pixel
+// filter: every path starts on the same ray), with its standard error and samples − 1 degrees of
+// freedom. Each path is one replica of the sampler (seed 1234, pixel `pixel_id`), so the paths
+// are independent and their spread gives the error.
+MeanEstimate estimateRayRadiance(const ref::PathTracer& tracer, const glm::vec3& origin,
+                                 const glm::vec3& direction, std::uint32_t samples,
+                                 std::uint32_t pixel_id);
 
 }  // namespace gib::test
