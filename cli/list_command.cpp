@@ -57,6 +57,15 @@ std::string needsText(const rt::TechniqueInfo& info) {
                    [](rt::TechniqueNeed need) { return std::string(rt::needName(need)); });
 }
 
+// What it renders where a scene has it, beyond Lambert and Phong surfaces and the scene's lights
+// (TechniqueInfo::renders_*): "mirrors and glass, environment maps", or empty.
+std::string rendersText(const rt::TechniqueInfo& info) {
+  std::vector<std::string> parts;
+  if (info.rendersSpecularMaterials()) parts.emplace_back("mirrors and glass");
+  if (info.renders_environment_map) parts.emplace_back("environment maps");
+  return joinNames(parts, ", ");
+}
+
 std::string techniqueMarkdown(const rt::TechniqueInfo& info) {
   std::string out = fmt::format(
       "`{}`: {}.\n\nSource: {}. Path class with the defaults: {}.\n\n## Parameters "
@@ -66,6 +75,8 @@ std::string techniqueMarkdown(const rt::TechniqueInfo& info) {
   for (const rt::DeclaredPass& pass : info.passes.passes())
     out += fmt::format("| `{}` | {} |\n", pass.path, pass.description);
   if (!info.needs.empty()) out += fmt::format("\n## Needs\n\n{}\n", needsText(info));
+  if (const std::string renders = rendersText(info); !renders.empty())
+    out += fmt::format("\n## Renders, where a scene has them\n\n{}\n", renders);
   auto outputs = [&](std::string_view title, std::string_view prefix,
                      const std::vector<rt::DeclaredOutput>& declared) {
     if (declared.empty()) return;
@@ -90,6 +101,8 @@ void listTechniques() {
     fmt::print("{:<{}}   source: {}\n", "", width, info.source);
     fmt::print("{:<{}}   path class (defaults): {}\n", "", width, defaultPathClass(info));
     if (!info.needs.empty()) fmt::print("{:<{}}   needs: {}\n", "", width, needsText(info));
+    if (const std::string renders = rendersText(info); !renders.empty())
+      fmt::print("{:<{}}   renders: {}\n", "", width, renders);
     for (const std::string& line : describeParameters(info.parameters))
       fmt::print("{:<{}}   --set {}\n", "", width, line);
     std::vector<std::string> passes;

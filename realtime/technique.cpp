@@ -5,6 +5,7 @@
 #include "realtime/techniques/direct/direct_technique.h"
 #include "realtime/techniques/distance_map_gather/distance_map_gather_technique.h"
 #include "realtime/techniques/distance_map_specular/distance_map_specular_technique.h"
+#include "realtime/techniques/environment_map/environment_map_technique.h"
 #include "realtime/techniques/gpu_ray_tracing/gpu_ray_tracing_technique.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
 #include "realtime/techniques/illumination_network/illumination_network_technique.h"
@@ -40,7 +41,8 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        obscurancesTechniqueInfo(),
                                                        gpuRayTracingTechniqueInfo(),
                                                        distanceMapSpecularTechniqueInfo(),
-                                                       distanceMapGatherTechniqueInfo()};
+                                                       distanceMapGatherTechniqueInfo(),
+                                                       environmentMapTechniqueInfo()};
   return catalogue;
 }
 
@@ -82,6 +84,10 @@ bool TechniqueInfo::hasNeed(TechniqueNeed need) const {
   return std::find(needs.begin(), needs.end(), need) != needs.end();
 }
 
+bool TechniqueInfo::rendersSpecularMaterials() const {
+  return renders_specular_materials || hasNeed(TechniqueNeed::kSpecularMaterials);
+}
+
 bool needsSceneFeatures(const TechniqueInfo& info) {
   return std::any_of(info.needs.begin(), info.needs.end(),
                      [](TechniqueNeed need) { return need != TechniqueNeed::kRayCaster; });
@@ -100,10 +106,15 @@ std::optional<std::string> missingNeed(const TechniqueInfo& info, const scene::S
 std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const scene::Scene& scene) {
   // The shading passes know Lambert and Phong only: a technique that does not say it renders
   // mirrors or glass would draw them as diffuse surfaces, a wrong image without an error.
-  if (scene.hasIdealSpecular() && !info.hasNeed(TechniqueNeed::kSpecularMaterials))
+  if (scene.hasIdealSpecular() && !info.rendersSpecularMaterials())
     return fmt::format(
         "technique '{}' does not render ideal mirrors or glass and scene '{}' has them; use the "
         "reference, or a scene without them",
+        info.name, scene.name);
+  if (!scene.environment.empty() && !info.renders_environment_map)
+    return fmt::format(
+        "technique '{}' does not render environment maps and scene '{}' has one; use the "
+        "reference, direct or environment_map, or a scene without a map",
         info.name, scene.name);
   for (TechniqueNeed need : info.needs) {
     switch (need) {
@@ -122,7 +133,7 @@ std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const sce
             "give it a scene with one",
             info.name, scene.name);
       case TechniqueNeed::kEnvironmentLight:
-        if (scene.sky_radiance != scene::Rgb(0.0f)) continue;
+        if (scene.hasEnvironmentLight()) continue;
         return fmt::format(
             "technique '{}' is lit by an environment and scene '{}' has no sky; give it a scene "
             "with a sky",

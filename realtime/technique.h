@@ -126,7 +126,7 @@ enum class TechniqueNeed {
   // a mesh that reflects or refracts ideally (scene::Scene::hasIdealSpecular); a technique without
   // it is refused such a scene
   kSpecularMaterials,
-  kEnvironmentLight,  // light arriving from beyond the scene (a sky)
+  kEnvironmentLight,  // light arriving from beyond the scene (a constant sky or a map)
   // a mesh with triangles that does not emit, for a technique that shades one object by itself
   // (distance_map_gather's final gathering)
   kShadedObject,
@@ -161,9 +161,19 @@ struct TechniqueInfo {
   std::vector<DeclaredOutput> auxiliary_images;
   std::vector<DeclaredOutput> statistics;
   std::vector<TechniqueNeed> needs;
+  // Whether it renders mirrors and glass where a scene has them without needing them (a scene
+  // without is no less its subject): `environment_map`'s diffuse objects alone. A technique that
+  // needs them declares kSpecularMaterials, which implies this.
+  bool renders_specular_materials = false;
+  // Whether it renders an environment map's light and shows the map where camera rays leave the
+  // scene (scene::Scene::environment). A scene with a map is refused to every technique that
+  // does not, as a scene with mirrors is: its own passes would take the map for black.
+  bool renders_environment_map = false;
   std::function<std::unique_ptr<Technique>(const ParameterValues&)> create;
 
   bool hasNeed(TechniqueNeed need) const;
+  // renders_specular_materials, or a need of them.
+  bool rendersSpecularMaterials() const;
 };
 
 // The first need of `info` that the scene lacks (a medium, a sky, a specular material), or the

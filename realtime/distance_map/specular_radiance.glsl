@@ -2,27 +2,15 @@
 // traced through its object's distance map (book §6.2): what the camera's specular pass shows,
 // and what a map shows of another specular object (§6.3). Needs scene.glsl and
 // distance_map.glsl before it.
-#include "scene/fresnel_shared.h"
+#include "realtime/gpu_scene/specular_fresnel.glsl"
 
-// Fresnel reflectance at cos θ of a mirror (per channel) by the block's setting: eq. 1.6's
-// approximation from the reflectance at normal incidence, as the book's shaders, or the exact
-// conductor function the reference uses. A perfect mirror reflects everything.
+// Fresnel reflectance at cos θ of a mirror (per channel) and of a glass, by the block's setting
+// (specular_fresnel.glsl).
 vec3 distanceMapMirrorFresnel(uint material, float cos_i) {
-  if (materialIsPerfectMirror(material)) return vec3(1.0);
-  vec3 n = materialConductorN(material), k = materialConductorK(material);
-  if (u_distance_map.search.w == kFresnelSchlick)
-    return fresnelApproximation(fresnelAtNormalIncidence(n, k), cos_i);
-  return fresnelConductor(cos_i, n, k);
+  return mirrorFresnel(material, cos_i, u_distance_map.search.w == kFresnelSchlick);
 }
-
-// A glass's reflectance at cos θ on its outside, likewise.
 float distanceMapGlassFresnel(uint material, float cos_i) {
-  float eta = materialIor(material);
-  if (u_distance_map.search.w == kFresnelSchlick) {
-    float f0 = (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0));
-    return fresnelApproximation(vec3(f0), cos_i).x;
-  }
-  return fresnelDielectric(cos_i, eta);
+  return glassFresnel(material, cos_i, u_distance_map.search.w == kFresnelSchlick);
 }
 
 // The radiance the map of `object` holds where the ray from world point p along unit `direction`

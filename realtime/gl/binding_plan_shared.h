@@ -34,6 +34,10 @@ const int kRayFlagsUnit = 17;      // the loose kd-tree's node flags
 const int kDistanceMapUnit = 18;
 const int kDistanceMapLightUnit = 19;
 const int kDistanceMapCodeUnit = 20;
+// lighting/: the scene's environment map (book §4.2), a latitude-longitude RGB texture
+// (environment_texture.h): the background the emission pass shows and what techniques that
+// light by it read.
+const int kEnvironmentUnit = 21;
 
 // Image units of compute passes (one program at a time reads one image and writes another, or
 // several: units kImageDestinationUnit and up, at most 4 of them, GL 4.5 offering 8).

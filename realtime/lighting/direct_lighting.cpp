@@ -71,12 +71,16 @@ DirectLighting::DirectLighting(const ShadowSettings& settings, int light_samples
 void DirectLighting::prepare(const GpuScene& scene) {
   // Points on emitters sit a hair in front of them, beyond the cube maps' near plane.
   const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
-  samples_ = makeLightSamples(scene.scene(),
-                              area_lights_ ? scene.emitters() : std::vector<EmitterTriangle>{},
-                              light_samples_, light_samples_, 1e-3f * extent);
+  samples_ = makeLightSamples(
+      scene.scene(), area_lights_ ? scene.emitters() : std::vector<EmitterTriangle>{},
+      light_samples_, environment_samples_ ? light_samples_ : 0, 1e-3f * extent);
   shadow_maps_.emplace(shadow_settings_, scene,
                        shadowBatchCapacity(shadow_settings_, samples_.size()));
-  emission_ = gl::FullScreenPass("realtime/lighting/emission.frag.glsl");
+  // Where camera rays leave a scene with an environment map, the pass shows the map (book
+  // §4.2); a scene without one keeps the constant sky's program, so its image is unchanged.
+  if (!scene.scene().environment.empty()) environment_.emplace(scene.scene().environment);
+  emission_ = gl::FullScreenPass("realtime/lighting/emission.frag.glsl",
+                                 environment_ ? kEnvironmentMapDefine : "");
   shade_point_ =
       gl::FullScreenPass("realtime/lighting/shade_light.frag.glsl",
                          shadow_maps_->defines(LightSampleKind::kPoint) + shading_defines_);
@@ -85,7 +89,11 @@ void DirectLighting::prepare(const GpuScene& scene) {
                          shadow_maps_->defines(LightSampleKind::kDirectional) + shading_defines_);
   shadow_maps_->setLookupConstants(shade_point_.program());
   shadow_maps_->setLookupConstants(shade_directional_.program());
-  emission_.program().set("u_sky_radiance", scene.scene().sky_radiance);
+  if (environment_) {
+    environment_->setUniforms(emission_.program());
+  } else {
+    emission_.program().set("u_sky_radiance", scene.scene().sky_radiance);
+  }
 }
 
 void DirectLighting::writeEmission(const GpuScene& scene, const GBuffer& gbuffer,
@@ -93,6 +101,7 @@ void DirectLighting::writeEmission(const GpuScene& scene, const GBuffer& gbuffer
   auto pass = profiler.pass(kEmissionPass);
   scene.bindSceneBuffers();
   gbuffer.bindTextures();
+  if (environment_) environment_->bind();
   target.bind();
   emission_.draw();  // in the default state: no depth test, no blending
 }

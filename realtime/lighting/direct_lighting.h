@@ -9,6 +9,7 @@
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/gl/fullscreen_pass.h"
 #include "realtime/gpu_scene/gpu_scene.h"
+#include "realtime/lighting/environment_texture.h"
 #include "realtime/lighting/light_samples.h"
 #include "realtime/lighting/shadow_maps.h"
 #include "realtime/pass_declarations.h"
@@ -56,6 +57,11 @@ class DirectLighting {
   // GLSL defines added to the camera's shading passes, set before prepare(): the particle
   // techniques attenuate each sample by their medium (realtime/particles/).
   void setShadingDefines(std::string defines) { shading_defines_ = std::move(defines); }
+  // Whether the light samples include the environment (a constant sky's directions, an
+  // environment map's drawn by importance), set before prepare(): a technique that lights by the
+  // environment itself (environment_map's convolved maps) leaves it out, as `area_lights` false
+  // leaves the emitters.
+  void setEnvironmentSamples(bool enabled) { environment_samples_ = enabled; }
   // Places the light samples and builds the shadow maps and programs.
   void prepare(const GpuScene& scene);
 
@@ -75,6 +81,9 @@ class DirectLighting {
   std::size_t sampleCount() const { return samples_.size(); }
   // The shadow maps addDirect draws (after prepare), for programs that read them in AfterBatch.
   const ShadowMaps& shadowMaps() const { return *shadow_maps_; }
+  // The scene's environment map as the emission pass shows it (after prepare), or nullptr for a
+  // scene without one: a technique that lights by the map reads the same upload.
+  const EnvironmentTexture* environment() const { return environment_ ? &*environment_ : nullptr; }
   // Moves every point sample (area-light points, spot and point lights) by `offset` for the
   // next addDirect: a light that moves between frames. Zero restores the scene's lights.
   void setLightOffset(const glm::vec3& offset) { light_offset_ = offset; }
@@ -87,9 +96,11 @@ class DirectLighting {
   ShadowSettings shadow_settings_;
   int light_samples_;
   bool area_lights_;
+  bool environment_samples_ = true;
   std::vector<LightSample> samples_;
   glm::vec3 light_offset_{0.0f};
   std::optional<ShadowMaps> shadow_maps_;
+  std::optional<EnvironmentTexture> environment_;
   std::string shading_defines_;
   gl::FullScreenPass emission_, shade_point_, shade_directional_;
 };

@@ -1,5 +1,7 @@
 #include "realtime/lighting/light_samples.h"
 
+#include "scene/environment_distribution.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -80,6 +82,27 @@ void addSkySamples(const scene::Rgb& radiance, int count, std::vector<LightSampl
   }
 }
 
+// An environment map (book §4.2.3's decomposition of the sky into directional lights, here by
+// importance rather than by cells): directions drawn by the map's luminance
+// (scene/environment_distribution.h, the reference's own distribution) at Hammersley points, each
+// carrying L(ω) / (pdf(ω) · count) of irradiance, an unbiased estimate of the map's light.
+void addEnvironmentSamples(const scene::EnvironmentMap& map, int count,
+                           std::vector<LightSample>& out) {
+  if (count <= 0 || map.empty()) return;
+  const scene::EnvironmentDistribution distribution(map);
+  if (distribution.black()) return;
+  for (int i = 0; i < count; ++i) {
+    const scene::EnvironmentSample s =
+        distribution.sample(hammersley(std::uint32_t(i), std::uint32_t(count)));
+    if (s.pdf <= 0) continue;
+    LightSample sample;
+    sample.kind = LightSampleKind::kDirectional;
+    sample.axis = -s.direction;
+    sample.intensity = s.radiance / (s.pdf * float(count));
+    out.push_back(sample);
+  }
+}
+
 }  // namespace
 
 std::vector<LightSample> makeLightSamples(const scene::Scene& scene,
@@ -105,6 +128,7 @@ std::vector<LightSample> makeLightSamples(const scene::Scene& scene,
   }
   addAreaSamples(emitters, area_samples, lift, samples);
   addSkySamples(scene.sky_radiance, sky_samples, samples);
+  addEnvironmentSamples(scene.environment, sky_samples, samples);
   return samples;
 }
 

@@ -38,7 +38,8 @@ gpu::GpuLightSample toGpuLightSample(const LightSample& sample,
 // Spot and directional lights one sample each; `area_samples` points over all emissive triangles
 // (chosen in proportion to their power, stratified by a Hammersley set, each lifted off its
 // emitter by `lift` along the normal so the emitter does not shadow itself); `sky_samples`
-// directions over the sphere for a constant sky. Deterministic: same scene, same samples.
+// directions over the sphere for a constant sky, or drawn by an environment map's luminance (its
+// importance distribution) for a map. Deterministic: same scene, same samples.
 std::vector<LightSample> makeLightSamples(const scene::Scene& scene,
                                           const std::vector<EmitterTriangle>& emitters,
                                           int area_samples, int sky_samples, float lift);

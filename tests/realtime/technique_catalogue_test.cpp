@@ -123,8 +123,15 @@ TEST(TechniqueNeeds, OnlyTechniquesThatRenderMirrorsOrGlassAcceptThem) {
     EXPECT_THAT(missingSceneNeed(plain, s).value_or(""),
                 HasSubstr("does not render ideal mirrors or glass and scene 'cornell' has them"));
     EXPECT_FALSE(missingSceneNeed(renders_specular, s));
+    TechniqueInfo renders_without_needing = plain;
+    renders_without_needing.renders_specular_materials = true;
+    EXPECT_FALSE(missingSceneNeed(renders_without_needing, s));
+    s.meshes.front().material = 0;
+    EXPECT_FALSE(missingSceneNeed(renders_without_needing, s)) << "and needs none";
+    EXPECT_TRUE(missingSceneNeed(renders_specular, s)) << "needs one";
+    s.meshes.front().material = std::uint32_t(s.materials.size() - 1);
     for (const TechniqueInfo& info : techniqueCatalogue()) {
-      if (!info.hasNeed(TechniqueNeed::kSpecularMaterials)) {
+      if (!info.rendersSpecularMaterials()) {
         EXPECT_TRUE(missingSceneNeed(info, s)) << info.name;
       }
     }

@@ -22,6 +22,9 @@ TechniqueInfo directTechniqueInfo() {
   info.source = "Szirmay-Kalos et al., GPU-Based Techniques for Global Illumination Effects, Ch. 4";
   info.parameters = SurfaceLighting::parameters();
   SurfaceLighting::declarePasses(info.passes);
+  // An environment map is lit by light samples drawn from it and shown as the background, both by
+  // the shared surface lighting (§4.2.3's directional decomposition, with shadows).
+  info.renders_environment_map = true;
   info.create = [](const ParameterValues& values) -> std::unique_ptr<Technique> {
     return std::make_unique<DirectTechnique>(values);
   };
