@@ -48,6 +48,9 @@ glm::vec3 EnvironmentMap::toWorld(const glm::vec3& map_direction) const {
 
 glm::vec2 latLongCoordinates(const glm::vec3& d) {
   const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
+  // No direction (a zero or non-finite vector) has no place on the map: (0, 0), the zenith's first
+  // texel, rather than NaN, which would make every texel index that follows undefined.
+  if (!(length > 0) || !std::isfinite(length)) return {0.0f, 0.0f};
   const double theta = std::acos(std::clamp(double(d.y) / length, -1.0, 1.0));
   double phi = std::atan2(double(d.z), double(d.x));
   if (phi < 0) phi += 2 * kPi;

@@ -50,7 +50,7 @@ struct EnvironmentMap {
 };
 
 // A map direction's coordinates (u, v) ∈ [0, 1)²: u = φ/(2π), v = θ/π. Not normalised: any
-// length > 0.
+// length > 0; a zero or non-finite vector gives (0, 0).
 glm::vec2 latLongCoordinates(const glm::vec3& map_direction);
 // The unit map direction at coordinates (u, v) ∈ [0, 1]².
 glm::vec3 latLongDirection(glm::vec2 uv);

@@ -52,6 +52,9 @@ TEST(EnvironmentMap, LatitudeLongitudeConvention) {
   EXPECT_FLOAT_EQ(latLongCoordinates({-1, 0, 0}).x, 0.5f);
   EXPECT_FLOAT_EQ(latLongCoordinates({0, 0, -1}).x, 0.75f);
   EXPECT_FLOAT_EQ(latLongCoordinates({1, 0, 0}).y, 0.5f);
+  // No direction: the first texel, not NaN (which would index anywhere).
+  EXPECT_EQ(latLongCoordinates({0, 0, 0}), glm::vec2(0.0f));
+  EXPECT_EQ(latLongCoordinates({std::numeric_limits<float>::quiet_NaN(), 1, 0}), glm::vec2(0.0f));
   // Round trips through every octant, and the length of the direction does not matter.
   for (const glm::vec3 d : {glm::vec3(0.3f, 0.8f, -0.5f), glm::vec3(-0.7f, -0.2f, 0.4f),
                             glm::vec3(-0.1f, 0.05f, -0.9f), glm::vec3(0.6f, -0.6f, 0.52f)}) {
