@@ -92,6 +92,7 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   settings.sampler = ref::parseSamplerName(o.sampler);
   settings.pixel_sampling = ref::parsePixelSampling(o.pixel_sampling);
   settings.light_paths = ref::parseLightPaths(o.light_paths);
+  settings.environment_occlusion = o.environment_occlusion != "off";
   settings.path_class = path_class;
   settings.obscurance = obscurance;
   settings.threads = o.threads;

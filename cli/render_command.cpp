@@ -43,6 +43,14 @@ CommandRunner addRenderCommand(CLI::App& app) {
       ->capture_default_str()
       ->group(kReference);
   render
+      ->add_option("--environment-occlusion", o->environment_occlusion,
+                   "on, or off: the environment (sky or map) lights diffuse and glossy surfaces "
+                   "unblocked, the assumption of environment mapping without shadows (book "
+                   "§4.2.1-4.2.2)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str()
+      ->group(kReference);
+  render
       ->add_option("--light-paths", o->light_paths,
                    "auto (trace the caustics' paths, L S (D|S)* D E, from the lights when the "
                    "scene has mirrors or glass) or off (camera paths only: caustics of spot and "

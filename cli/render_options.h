@@ -25,7 +25,8 @@ struct RenderOptions {
   long long replicas = 0;  // 0: ref::defaultReplicas
   std::string sampler = "sobol";
   std::string pixel_sampling = "area";
-  std::string light_paths = "auto";  // ref::LightPaths
+  std::string light_paths = "auto";          // ref::LightPaths
+  std::string environment_occlusion = "on";  // or "off": RenderSettings::environment_occlusion
   int min_bounces = 0;
   std::optional<int> max_bounces;
   std::string paths;  // a path expression (scene/path_expression.h); exclusive with the bounces

@@ -20,10 +20,10 @@ namespace gib::cli {
 
 int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   const rt::TechniqueInfo& info = rt::findTechnique(o.technique);
-  const std::vector<std::string> foreign =
-      givenOptions(app, {"--spp", "--seed", "--sampler", "--light-paths", "--pixel-sampling",
-                         "--replicas", "--min-bounces", "--max-bounces", "--paths", "--threads",
-                         "--checkpoints", "--obscurance", "--obscurance-mode", "--d-max"});
+  const std::vector<std::string> foreign = givenOptions(
+      app, {"--spp", "--seed", "--sampler", "--light-paths", "--environment-occlusion",
+            "--pixel-sampling", "--replicas", "--min-bounces", "--max-bounces", "--paths",
+            "--threads", "--checkpoints", "--obscurance", "--obscurance-mode", "--d-max"});
   if (!foreign.empty())
     throw InputError(fmt::format(
         "{} applies to the reference path tracer; technique '{}' takes --set key=value (see "

@@ -35,7 +35,8 @@ WalkRandom walkRandom(bool has_medium, PathSampler& sampler, FirstDraw&& first) 
 
 }  // namespace
 
-PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class, bool light_paths)
+PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class, bool light_paths,
+                       bool environment_occlusion)
     : scene_(scene),
       path_class_(path_class),
       expression_(scene::compilePathClass(path_class)),
@@ -44,7 +45,8 @@ PathTracer::PathTracer(const scene::Scene& scene, PathClass path_class, bool lig
       triangles_(scene),
       area_lights_(scene, triangles_),
       density_(scene.medium.particles),
-      has_sky_(maxComponent(scene.sky_radiance) > 0) {
+      has_sky_(maxComponent(scene.sky_radiance) > 0),
+      environment_occlusion_(environment_occlusion) {
   if (!density_.empty()) medium_.emplace(density_);
   if (!scene.environment.empty()) environment_.emplace(scene.environment);
 }
@@ -67,6 +69,19 @@ float PathTracer::rayTransmittance(const glm::vec3& origin, const glm::vec3& dir
   ++rays;
   if (embree_.occluded(origin, direction, 0.0f, kInfinity)) return 0.0f;
   return medium_ ? medium_->transmittance(origin, direction, kInfinity, random) : 1.0f;
+}
+
+float PathTracer::environmentTransmittance(const glm::vec3& origin, const glm::vec3& wi,
+                                           PathSampler& sampler, std::uint32_t& rays) const {
+  if (!environment_occlusion_) return 1.0f;
+  return rayTransmittance(origin, wi,
+                          walkRandom(medium_.has_value(), sampler,
+                                     [&] { return sampler.get1D(VertexDimension::kSkyShadow); }),
+                          rays);
+}
+
+float PathTracer::environmentLightWeight(float pdf_light, float pdf_scattering) const {
+  return environment_occlusion_ ? powerHeuristic(pdf_light, pdf_scattering) : 1.0f;
 }
 
 Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
@@ -107,14 +122,10 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
     const Rgb f = v.evaluate(wi);
     const float pdf_sky = v.skyPdf(wi);
     if (pdf_sky > 0 && maxComponent(f) > 0) {
-      const float transmittance =
-          rayTransmittance(origin, wi,
-                           walkRandom(has_medium, sampler,
-                                      [&] { return sampler.get1D(VertexDimension::kSkyShadow); }),
-                           rays);
+      const float transmittance = environmentTransmittance(origin, wi, sampler, rays);
       if (transmittance > 0)
         result += f * scene_.sky_radiance *
-                  (transmittance * powerHeuristic(pdf_sky, v.pdf(wi)) / pdf_sky);
+                  (transmittance * environmentLightWeight(pdf_sky, v.pdf(wi)) / pdf_sky);
     }
   }
 
@@ -125,14 +136,10 @@ Rgb PathTracer::estimateDirect(const ScatteringVertex& v, PathSampler& sampler,
         environment_->sample(sampler.get2D(VertexDimension::kSkyDirection));
     const Rgb f = s.pdf > 0 ? v.evaluate(s.direction) : Rgb(0.0f);
     if (maxComponent(f) > 0 && maxComponent(s.radiance) > 0) {
-      const float transmittance =
-          rayTransmittance(origin, s.direction,
-                           walkRandom(has_medium, sampler,
-                                      [&] { return sampler.get1D(VertexDimension::kSkyShadow); }),
-                           rays);
+      const float transmittance = environmentTransmittance(origin, s.direction, sampler, rays);
       if (transmittance > 0)
-        result +=
-            f * s.radiance * (transmittance * powerHeuristic(s.pdf, v.pdf(s.direction)) / s.pdf);
+        result += f * s.radiance *
+                  (transmittance * environmentLightWeight(s.pdf, v.pdf(s.direction)) / s.pdf);
     }
   }
 
@@ -224,7 +231,10 @@ RadianceSample PathTracer::radiance(const glm::vec3& camera_origin,
       vertex.g = scene_.medium.g;
       throughput *= scene_.medium.albedo;
     } else if (!hit.valid()) {
-      // The path leaves the scene: the sky.
+      // The path leaves the scene: the sky. Without the environment's occlusion, next-event
+      // estimation carried all of it at the vertex that sampled this direction, unless that
+      // vertex was specular (or the camera), which next-event estimation cannot serve.
+      if (!environment_occlusion_ && bounces > 0 && !previous_specular) break;
       if (has_sky_) {
         const float weight =
             bounces == 0 || previous_specular

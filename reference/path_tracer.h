@@ -46,7 +46,9 @@ class PathTracer {
   // With `light_paths`, paths whose vertex next to the light is specular and whose vertex seen by
   // the eye is diffuse (L S (D|S)* D E) are the light tracer's, and this tracer leaves them out;
   // the two images add up to every path once.
-  PathTracer(const scene::Scene& scene, PathClass path_class, bool light_paths = false);
+  // `environment_occlusion` false: the environment's light is never blocked (RenderSettings).
+  PathTracer(const scene::Scene& scene, PathClass path_class, bool light_paths = false,
+             bool environment_occlusion = true);
 
   // The radiance arriving at `origin` from `direction`. `first_hit`, when given, is the closest
   // hit of that ray, already traced by the caller (camera rays go to Embree in coherent batches).
@@ -74,6 +76,14 @@ class PathTracer {
   // The same for a ray to infinity.
   float rayTransmittance(const glm::vec3& origin, const glm::vec3& direction, WalkRandom random,
                          std::uint32_t& rays) const;
+  // Of a ray towards the environment: rayTransmittance, or 1 without the environment's occlusion
+  // (then neither shadow ray nor tracking walk is drawn).
+  float environmentTransmittance(const glm::vec3& origin, const glm::vec3& wi, PathSampler& sampler,
+                                 std::uint32_t& rays) const;
+  // The MIS weight of environment light drawn by the light's strategy: the power heuristic against
+  // BSDF or phase sampling, or 1 without the environment's occlusion (paths that leave the scene
+  // after a diffuse or glossy vertex then add none).
+  float environmentLightWeight(float pdf_light, float pdf_scattering) const;
 
   const scene::Scene& scene_;
   PathClass path_class_;
@@ -85,6 +95,7 @@ class PathTracer {
   scene::DensityGrid density_;
   std::optional<MediumTracker> medium_;
   bool has_sky_;
+  bool environment_occlusion_;
   // The environment map's importance distribution, when the scene has a map.
   std::optional<scene::EnvironmentDistribution> environment_;
 };

@@ -227,7 +227,8 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
 
   const bool light_paths = tracesLightPaths(scene, settings);
   // An obscurance has no path class: the tracer lends it its BVH and triangles only.
-  PathTracer tracer(scene, settings.obscurance ? PathClass{} : settings.path_class, light_paths);
+  PathTracer tracer(scene, settings.obscurance ? PathClass{} : settings.path_class, light_paths,
+                    settings.environment_occlusion);
   std::optional<ObscuranceEstimator> obscurance;
   if (settings.obscurance)
     obscurance.emplace(scene, *settings.obscurance, tracer.embree(), tracer.triangles());

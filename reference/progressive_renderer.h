@@ -56,6 +56,10 @@ struct RenderSettings {
   // as for radiance; light paths are not traced and the path class is ignored; `direct` holds
   // the mean and `indirect` zero.
   std::optional<scene::ObscuranceDefinition> obscurance;
+  // False: light from the environment (a constant sky or a map) reaches every point unblocked,
+  // v(x, ω) = 1 for it alone (book §4.2.1-4.2.2's assumption), so that an environment-mapping
+  // technique's convolution error can be told from its missing shadows (PathTracer).
+  bool environment_occlusion = true;
   int threads = 0;        // 0: all cores. The image does not depend on it.
   bool progress = false;  // draw a progress bar on a terminal
 };

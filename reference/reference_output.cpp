@@ -27,6 +27,8 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
       {"max_bounces", unlimited ? nlohmann::ordered_json("unlimited")
                                 : nlohmann::ordered_json(s.path_class.max_bounces)}};
   if (s.obscurance) parameters["obscurance"] = scene::describeObscurance(*s.obscurance);
+  // Only without it, so that the metadata of every other reference stays as it was.
+  if (!s.environment_occlusion) parameters["environment_occlusion"] = "off";
   image::Metadata m =
       scene::outputMetadata(scene, "reference", parameters.dump(), s.width, s.height, s.path_class);
   m["gibench/spp"] = std::to_string(s.spp);
@@ -36,6 +38,9 @@ image::Metadata referenceMetadata(const scene::Scene& scene, const RenderSetting
   m["gibench/pixel_sampling"] = pixelSamplingName(s.pixel_sampling);
   // Whether light paths joined the camera paths (docs/rendering.md, "Caustics: light tracing").
   m["gibench/light_paths"] = tracesLightPaths(scene, s) ? "traced" : "none";
+  if (!s.environment_occlusion)
+    m["gibench/environment_occlusion"] =
+        "off: the environment lights diffuse and glossy surfaces unblocked";
   m["gibench/embree_version"] = embreeVersion();
   constexpr const char* kVarianceLayer =
       "variance: variance of the per-pixel mean, from the spread of the replicas' means "

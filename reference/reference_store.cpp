@@ -199,13 +199,16 @@ std::string referenceKey(const scene::Scene& scene, const ReferenceSpec& spec) {
     hasher.addString(fmt::format(
         "obscurance={},{},{}", scene::obscuranceFalloffName(spec.obscurance->falloff),
         scene::obscuranceModeName(spec.obscurance->mode), spec.obscurance->d_max_fraction));
+  // Only without the environment's occlusion, so that every other key stays valid.
+  if (!spec.environment_occlusion) hasher.addString("environment_occlusion=off");
   hasher.addString(kReferenceRendererVersion);
   return hasher.hexDigest();
 }
 
 std::string describeReferenceQuantity(const ReferenceSpec& spec) {
-  return spec.obscurance ? scene::describeObscurance(*spec.obscurance)
-                         : scene::describePathClass(spec.path_class);
+  if (spec.obscurance) return scene::describeObscurance(*spec.obscurance);
+  return scene::describePathClass(spec.path_class) +
+         (spec.environment_occlusion ? "" : ", environment unoccluded");
 }
 
 ReferenceStore::ReferenceStore(fs::path root) : root_(std::move(root)) {}

@@ -50,6 +50,9 @@ struct ReferenceSpec {
   // class is then ignored, and left at every path by the harness). A radiance reference keeps
   // the key it had before obscurances existed.
   std::optional<scene::ObscuranceDefinition> obscurance;
+  // False: the environment's light reaches diffuse and glossy surfaces unblocked
+  // (RenderSettings::environment_occlusion). A reference with occlusion keeps its key.
+  bool environment_occlusion = true;
 };
 
 // What a stored reference is of, in results and `store list`: its path class in Heckbert's

@@ -47,6 +47,8 @@ StoreEntry entryFromJson(const ordered_json& j) {
   e.spec.path_class.expression = spec.value("paths", std::string());
   // Recorded since pixel-centre references exist; an entry without it is box-filtered.
   e.spec.pixel_sampling = parsePixelSampling(spec.value("pixel_sampling", std::string("area")));
+  // Recorded without the environment's occlusion only; an entry without it has it.
+  e.spec.environment_occlusion = spec.value("environment_occlusion", true);
   // Recorded for an obscurance reference only; an entry without it is of radiance.
   if (const auto it = spec.find("obscurance"); it != spec.end()) {
     scene::ObscuranceDefinition obscurance;
@@ -88,6 +90,7 @@ ordered_json entryToJson(const StoreEntry& e) {
                     {"render_seconds", e.render_seconds},
                     {"reference_exr_hash", e.exr_hash}};
   if (!e.spec.path_class.expression.empty()) j["spec"]["paths"] = e.spec.path_class.expression;
+  if (!e.spec.environment_occlusion) j["spec"]["environment_occlusion"] = false;
   if (e.spec.obscurance)
     j["spec"]["obscurance"] = {
         {"falloff", std::string(scene::obscuranceFalloffName(e.spec.obscurance->falloff))},
@@ -139,6 +142,7 @@ RenderSettings renderSettingsOf(const ReferenceSpec& spec, bool progress) {
   settings.path_class = spec.path_class;
   settings.pixel_sampling = spec.pixel_sampling;
   settings.obscurance = spec.obscurance;
+  settings.environment_occlusion = spec.environment_occlusion;
   settings.progress = progress;
   return settings;
 }

@@ -54,9 +54,22 @@ ref::PixelSampling pixelSampling(const PreparedJob& p) {
   return p.job->isReference() ? ref::PixelSampling::kArea : ref::PixelSampling::kCenter;
 }
 
-// The spec of the job's reference of `path_class`, or of its obscurance (then the class is every
-// path, which keeps the key canonical: the renderer ignores it).
-ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& path_class) {
+// A reference a job is measured against: its class's, with the suite's environment occlusion, or
+// the full one (every path, the environment occluded as physics has it).
+struct JobReference {
+  scene::PathClass path_class;
+  bool full = false;
+};
+
+JobReference classReference(const PreparedJob& p) {
+  return {referenceClass(p), false};
+}
+constexpr JobReference kFullReference{scene::PathClass{}, true};
+
+// The spec of the job's reference, or of its obscurance (then the class is every path, which
+// keeps the key canonical: the renderer ignores it).
+ref::ReferenceSpec referenceSpec(const PreparedJob& p, const JobReference& of) {
+  const scene::PathClass& path_class = of.path_class;
   ref::ReferenceSpec spec;
   spec.scene = p.job->scene.nameOrPath();
   spec.scene_parameters = assignmentStrings(p.job->scene_parameters);
@@ -67,6 +80,7 @@ ref::ReferenceSpec referenceSpec(const PreparedJob& p, const scene::PathClass& p
   spec.path_class = p.obscurance ? scene::PathClass{} : path_class;
   spec.pixel_sampling = pixelSampling(p);
   spec.obscurance = p.obscurance;
+  spec.environment_occlusion = of.full || p.job->settings.reference.environment_occlusion;
   return spec;
 }
 
@@ -84,9 +98,8 @@ results::ReferenceUse referenceUse(const ref::StoredReference& stored, double se
 
 // Fetches (or renders and stores) the reference of `path_class`, saying which on the way.
 ref::StoredReference obtainReference(const PreparedJob& p, const JobEnvironment& env,
-                                     const scene::PathClass& path_class,
-                                     results::ReferenceUse* use) {
-  const ref::ReferenceSpec spec = referenceSpec(p, path_class);
+                                     const JobReference& of, results::ReferenceUse* use) {
+  const ref::ReferenceSpec spec = referenceSpec(p, of);
   const std::string what = fmt::format(
       "reference {} ({}x{}, {} spp, {})", ref::describeReferenceQuantity(spec), spec.width,
       spec.height, spec.spp,
@@ -122,13 +135,21 @@ metrics::MetricReport measure(const image::Image& reference, const image::Image&
   return metrics::evaluateMetrics(reference, test, names, options);
 }
 
+// Whether a technique job has a full reference besides its class's: unless the class's is the
+// full one (every path, the environment occluded) or the image is an obscurance, which no
+// radiance reference measures.
+bool needsFullReference(const PreparedJob& p) {
+  if (p.job->isReference() || p.obscurance) return false;
+  return referenceClass(p) != scene::PathClass{} ||
+         !p.job->settings.reference.environment_occlusion;
+}
+
 void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env,
                                  const JobDirectory& files, const image::Image& test,
                                  PixelMasks masks, results::JobResult& result) {
-  if (referenceClass(p) == scene::PathClass{}) return;  // the class reference is the full one
-  if (p.obscurance) return;  // an obscurance is not radiance: no full reference measures it
+  if (!needsFullReference(p)) return;
   results::ReferenceUse use;
-  const ref::StoredReference full = obtainReference(p, env, scene::PathClass{}, &use);
+  const ref::StoredReference full = obtainReference(p, env, kFullReference, &use);
   result.full_reference = use;
   result.outputs.full_reference_exr = copyReferenceExr(files, full);
   result.metrics_full = measure(full.mean, test, p.job->settings.metrics, masks).values;
@@ -139,7 +160,7 @@ void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env
 void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const JobDirectory& files,
                      results::JobResult& result) {
   const ref::StoredReference reference =
-      obtainReference(p, env, referenceClass(p), &result.reference);
+      obtainReference(p, env, classReference(p), &result.reference);
   const std::vector<int>& checkpoints = p.job->settings.checkpoints;
   metrics::MetricReport last_report;
   image::Image last_mean;
@@ -152,6 +173,7 @@ void runReferenceJob(const PreparedJob& p, const JobEnvironment& env, const JobD
     settings.seed = independentSeed(p.job->settings.reference.seed);
     settings.path_class = referenceClass(p);
     settings.pixel_sampling = pixelSampling(p);
+    settings.environment_occlusion = p.job->settings.reference.environment_occlusion;
     settings.progress = env.progress;
     results::Convergence convergence;
     convergence.x_label = "spp";
@@ -275,7 +297,7 @@ void runTechniqueJob(const PreparedJob& p, const JobEnvironment& env, const JobD
   result.outputs.timings_json = files.relative(files.timings_json);
 
   const ref::StoredReference reference =
-      obtainReference(p, env, referenceClass(p), &result.reference);
+      obtainReference(p, env, classReference(p), &result.reference);
   std::optional<image::Image> disagreement;
   if (run.primary) disagreement = recordPrimaryAgreement(p, files, *run.primary, result);
   const PixelMasks masks{disagreement ? &*disagreement : nullptr,
@@ -314,6 +336,8 @@ std::string jobHash(const PreparedJob& p) {
   if (s.iterations) hasher.addString(fmt::format("iterations={}", *s.iterations));
   // Only for an obscurance, so that the hash of every radiance job stays the same.
   if (p.obscurance) hasher.addString(scene::describeObscurance(*p.obscurance));
+  // Likewise only without the environment's occlusion.
+  if (!s.reference.environment_occlusion) hasher.addString("environment_occlusion=off");
   return hasher.hexDigest();
 }
 
@@ -388,28 +412,26 @@ results::JobResult executeJob(const PreparedJob& p, const JobEnvironment& env,
 
 namespace {
 
-// The classes of the job's references: its class's, then (technique jobs) the full one when that
-// differs; one for an obscurance (referenceSpec makes it the obscurance's).
-std::vector<scene::PathClass> referenceClasses(const PreparedJob& p) {
-  std::vector<scene::PathClass> classes = {referenceClass(p)};
-  if (!p.job->isReference() && !p.obscurance && classes.front() != scene::PathClass{})
-    classes.push_back(scene::PathClass{});
-  return classes;
+// The job's references: its class's, then (technique jobs) the full one when that differs; one
+// for an obscurance (referenceSpec makes it the obscurance's).
+std::vector<JobReference> jobReferenceList(const PreparedJob& p) {
+  std::vector<JobReference> references = {classReference(p)};
+  if (needsFullReference(p)) references.push_back(kFullReference);
+  return references;
 }
 
 }  // namespace
 
 std::vector<ref::ReferenceSpec> jobReferences(const PreparedJob& p) {
   std::vector<ref::ReferenceSpec> specs;
-  for (const scene::PathClass& path_class : referenceClasses(p))
-    specs.push_back(referenceSpec(p, path_class));
+  for (const JobReference& of : jobReferenceList(p)) specs.push_back(referenceSpec(p, of));
   return specs;
 }
 
 void obtainJobReferences(const PreparedJob& p, const JobEnvironment& env) {
-  for (const scene::PathClass& path_class : referenceClasses(p)) {
+  for (const JobReference& of : jobReferenceList(p)) {
     results::ReferenceUse use;
-    obtainReference(p, env, path_class, &use);
+    obtainReference(p, env, of, &use);
   }
 }
 

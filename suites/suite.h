@@ -33,6 +33,10 @@ struct ReferenceSettings {
   // pixel centres for a technique case (its error is its lighting's, not anti-aliasing's), the
   // box filter for a reference case (the reference's own convergence, as other renderers do it).
   std::optional<std::string> pixel_sampling;
+  // False: the environment lights diffuse and glossy surfaces unblocked in the job's class
+  // reference (ref::RenderSettings::environment_occlusion), to tell an environment-mapping
+  // technique's convolution error from its missing shadows; the full reference keeps it.
+  bool environment_occlusion = true;
 
   bool operator==(const ReferenceSettings&) const = default;
 };

@@ -45,8 +45,9 @@ constexpr long long kMaxRepeats = 100;
 
 const std::vector<std::string> kSettingKeys = {"width",  "height",  "metrics",  "frames",
                                                "warmup", "repeats", "reference"};
-const std::vector<std::string> kReferenceKeys = {"spp",         "seed",  "min_bounces",
-                                                 "max_bounces", "paths", "pixel_sampling"};
+const std::vector<std::string> kReferenceKeys = {
+    "spp",   "seed",           "min_bounces",          "max_bounces",
+    "paths", "pixel_sampling", "environment_occlusion"};
 
 bool isSafeName(std::string_view name) {
   return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
@@ -110,7 +111,8 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
   const TomlTableReader t(parent.errors(),
                           requireTomlTable(parent.errors(), node, name,
                                            fmt::format("write [{}] with spp, seed, min_bounces, "
-                                                       "max_bounces, paths or pixel_sampling",
+                                                       "max_bounces, paths, pixel_sampling or "
+                                                       "environment_occlusion",
                                                        name)),
                           name, fmt::format("[{}]", name), kReferenceKeys);
   if (const toml::node* n = t.find("spp"))
@@ -155,6 +157,8 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
           "the rasteriser samples) or \"area\" (a box filter over each pixel)");
     s.run.reference.pixel_sampling = sampling;
   }
+  if (const toml::node* n = t.find("environment_occlusion"))
+    s.run.reference.environment_occlusion = t.boolean(*n, "environment_occlusion");
 }
 
 // Reads the keys of kSettingKeys present in `t` over `s`.

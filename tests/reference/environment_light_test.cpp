@@ -22,9 +22,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr float kAlbedo = 0.8f;
 constexpr std::uint32_t kSamples = 20000;
 
-// A correct path tracer fails one of this file's seven tests with probability 1%: three rays at
-// the sphere, three tilted planes, the sun.
-constexpr test::TestFamily kFamily(0.01, 3 + 3 + 1);
+// A correct path tracer fails one of this file's eight tests with probability 1%: three rays at
+// the sphere, three tilted planes, the sun, the plane under a roof without occlusion.
+constexpr test::TestFamily kFamily(0.01, 3 + 3 + 1 + 1);
 
 template <typename Radiance>
 scene::EnvironmentMap greyMap(int height, Radiance radiance) {
@@ -128,6 +128,27 @@ TEST(EnvironmentLight, SunTexelLightsAPlaneByItsPowerWithLittleNoise) {
   // Uniform sampling of the hemisphere would find the sun in one path of about 3 000 (its solid
   // angle over 2π), most estimates of 2 000 paths missing it; importance sampling errs by under 2%.
   EXPECT_LT(e.standard_error, 0.02 * expected);
+}
+
+TEST(EnvironmentLight, WithoutOcclusionAPlaneUnderARoofSeesTheWholeSky) {
+  // A plane with a roof 0.5 above it (8 × 8, twice the plane's size), under a constant map of 1:
+  // occluded, the centre sees a thin band of sky at the sides; without occlusion (book §4.2.2's
+  // v = 1), E = π exactly, so the one-bounce radiance is ρ.
+  scene::Scene s = sceneUnder(greyMap(16, [](int, int, glm::vec2) { return 1.0; }));
+  scene::appendQuad(s.meshes.emplace_back(), {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
+  scene::appendQuad(s.meshes.emplace_back(), {-4, 0.5f, -4}, {4, 0.5f, -4}, {4, 0.5f, 4},
+                    {-4, 0.5f, 4});
+  const glm::vec3 origin{0, 0.25f, 0}, down{0, -1, 0};
+  const PathTracer unoccluded(s, PathClass{1, 1}, false, /*environment_occlusion=*/false);
+  const test::MeanEstimate e = test::estimateRayRadiance(unoccluded, origin, down, kSamples, 0);
+  EXPECT_TRUE(kFamily.tTest(e.mean, kAlbedo, e.standard_error, e.dof, 1e-5));
+  // The roof stops most of that light when it occludes (the sky's band below 7° of the horizon
+  // and the roof's own light, which reaches the plane in two bounces, not in this class).
+  const PathTracer occluded(s, PathClass{1, 1});
+  EXPECT_LT(test::estimateRayRadiance(occluded, origin, down, 1000, 0).mean, 0.2 * kAlbedo);
+  // Every path: the roof's underside, lit by the plane, adds its bounces without occlusion too.
+  const PathTracer all_paths(s, PathClass{}, false, false);
+  EXPECT_GT(test::estimateRayRadiance(all_paths, origin, down, 1000, 0).mean, 1.1 * kAlbedo);
 }
 
 }  // namespace

@@ -83,5 +83,32 @@ TEST(ReferenceStorePathClass, EntryRecordsAnExpressionAndOnlyThen) {
   EXPECT_FALSE(entryToJson(entry).at("spec").contains("paths"));
 }
 
+// A reference without the environment's occlusion (RenderSettings::environment_occlusion) is
+// keyed apart and says so, in its entry and its description; one with it keeps its key and entry.
+TEST(ReferenceStorePathClass, EnvironmentWithoutOcclusionHasAKeyOfItsOwn) {
+  const scene::Scene outdoor = scene::loadScene("outdoor", {"sky_resolution=32"});
+  ReferenceSpec spec = withClass({1, 1});
+  const std::string with = referenceKey(outdoor, spec);
+  EXPECT_EQ(with, keyBeforePathExpressions(outdoor, spec));
+  spec.environment_occlusion = false;
+  EXPECT_NE(referenceKey(outdoor, spec), with);
+  EXPECT_EQ(describeReferenceQuantity(spec),
+            scene::describePathClass(spec.path_class) + ", environment unoccluded");
+
+  test::TempDir dir;
+  StoreEntry entry;
+  entry.spec = spec;
+  entry.key = "0123456789abcdef0123456789abcdef";
+  entry.scene_name = "outdoor";
+  entry.exr_hash = "hash";
+  EXPECT_EQ(entryToJson(entry).at("spec").at("environment_occlusion"), false);
+  fs::create_directories(dir / entry.key);
+  std::ofstream(dir / entry.key / "entry.json") << entryToJson(entry).dump(2);
+  EXPECT_FALSE(readStoreEntry(dir / entry.key).spec.environment_occlusion);
+  EXPECT_FALSE(renderSettingsOf(readStoreEntry(dir / entry.key).spec, false).environment_occlusion);
+  entry.spec.environment_occlusion = true;
+  EXPECT_FALSE(entryToJson(entry).at("spec").contains("environment_occlusion"));
+}
+
 }  // namespace
 }  // namespace gib::ref

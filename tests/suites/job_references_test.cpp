@@ -34,6 +34,26 @@ TEST(JobReferences, RadianceJobHasItsClassAndTheFullReference) {
   for (const ref::ReferenceSpec& spec : specs) EXPECT_FALSE(spec.obscurance);
 }
 
+// `environment_occlusion = false` in a case's reference: its class's reference lights diffuse and
+// glossy surfaces by the unblocked environment, the full one keeps the occlusion; a job whose
+// class is every path then still has both.
+TEST(JobReferences, EnvironmentWithoutOcclusionKeepsAnOccludedFullReference) {
+  Job job = directJob();
+  job.settings.reference.environment_occlusion = false;
+  const PreparedJob p = prepareJob(job);
+  std::vector<ref::ReferenceSpec> specs = jobReferences(p);
+  ASSERT_EQ(specs.size(), 2u);
+  EXPECT_FALSE(specs[0].environment_occlusion);
+  EXPECT_EQ(specs[1].path_class, scene::PathClass{});
+  EXPECT_TRUE(specs[1].environment_occlusion);
+  PreparedJob every_path = p;
+  every_path.path_class = scene::PathClass{};
+  specs = jobReferences(every_path);
+  ASSERT_EQ(specs.size(), 2u);
+  EXPECT_EQ(specs[0].path_class, specs[1].path_class);
+  EXPECT_NE(specs[0].environment_occlusion, specs[1].environment_occlusion);
+}
+
 TEST(JobReferences, ObscuranceJobHasItsObscuranceReferenceAlone) {
   const Job job = directJob();
   PreparedJob p = prepareJob(job);

@@ -203,6 +203,29 @@ max_bounces = 1
   EXPECT_EQ(c.settings.reference.max_bounces, 1);
 }
 
+TEST_F(SuiteFileTest, ReferenceWithoutTheEnvironmentsOcclusion) {
+  const Suite suite = load(R"(name = "unoccluded"
+[[case]]
+scene = "outdoor"
+technique = "environment_map"
+reference = { spp = 16, environment_occlusion = false }
+[[case]]
+name = "occluded"
+scene = "outdoor"
+technique = "environment_map"
+)");
+  EXPECT_FALSE(suite.cases[0].settings.reference.environment_occlusion);
+  EXPECT_TRUE(suite.cases[1].settings.reference.environment_occlusion);
+  EXPECT_THAT(expectErrorAt(R"(name = "bad"
+[[case]]
+scene = "outdoor"
+technique = "environment_map"
+reference = { environment_occlusion = "off" }
+)",
+                            "environment_occlusion"),
+              HasSubstr("environment_occlusion"));
+}
+
 TEST_F(SuiteFileTest, RelativeScenePathsStartAtTheSuiteFilesFolder) {
   writeFile(dir_ / "scenes" / "room.toml", "# not read while parsing the suite\n");
   writeFile(dir_ / "sub" / "suite.toml", R"(name = "files"
