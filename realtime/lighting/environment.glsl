@@ -23,7 +23,9 @@ vec3 environmentMapDirection(vec3 world) {
 // latLongCoordinates: (u, v) = (φ/(2π), θ/π) of a map direction of any length > 0.
 vec2 environmentCoordinates(vec3 d) {
   float theta = acos(clamp(d.y / length(d), -1.0, 1.0));
-  float u = 0.5 * kInvPi * atan(d.z, d.x);  // in [−1/2, 1/2]
+  // atan(0, 0) is undefined in GLSL (C's atan2 gives 0): straight up or down, as the CPU does,
+  // take column 0, so that a horizontal surface's normal finds the same texel on every GPU.
+  float u = d.x == 0.0 && d.z == 0.0 ? 0.0 : 0.5 * kInvPi * atan(d.z, d.x);  // in [−1/2, 1/2]
   if (u < 0.0) u += 1.0;
   return min(vec2(u, theta * kInvPi), vec2(kEnvironmentBelowOne));
 }

@@ -23,8 +23,11 @@ void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(u_maps).xy;
   if (texel.x >= size.x || texel.y >= size.y) return;
-  // The texel centre's map direction (latLongDirection): φ = 2πu, θ = πv.
-  vec2 uv = (vec2(texel) + 0.5) / vec2(size);
+  // The texel's map direction (latLongDirection): φ = 2πu at the column's centre, θ = πv with
+  // the rows from pole to pole inclusive (row 0 straight up, the last straight down), so that a
+  // normal at a pole, a horizontal surface's, reads the irradiance of exactly that direction
+  // rather than clamping to a row some degrees off whose value depends on the azimuth.
+  vec2 uv = vec2((float(texel.x) + 0.5) / float(size.x), float(texel.y) / float(size.y - 1));
   float phi = 2.0 * uv.x / kInvPi, theta = uv.y / kInvPi;
   vec3 axis = vec3(sin(theta) * cos(phi), cos(theta), sin(theta) * sin(phi));
 

@@ -14,9 +14,14 @@ uniform bool u_fresnel_schlick;  // fresnel=schlick: eq. 1.6's approximation, as
 
 layout(location = 0) out vec4 o_radiance;
 
-// A convolved layer in a world direction, times the map's intensity (the sums leave it out).
+// A convolved layer in a world direction, times the map's intensity (the sums leave it out). Its
+// rows run from pole to pole inclusive (convolve.comp.glsl): v = θ/π falls between rows
+// ⌊v(H − 1)⌋ and the next, whose centres are at texture coordinates (row + ½)/H.
 vec3 convolvedRadiance(int layer, vec3 world) {
-  return u_environment.z * texture(u_convolved, vec3(environmentCoordinatesOf(world), layer)).rgb;
+  vec2 uv = environmentCoordinatesOf(world);
+  float rows = float(textureSize(u_convolved, 0).y);
+  uv.y = (uv.y * (rows - 1.0) + 0.5) / rows;
+  return u_environment.z * texture(u_convolved, vec3(uv, layer)).rgb;
 }
 
 // The glossy layer of a Phong exponent, or −1 for one the technique did not convolve.

@@ -82,7 +82,7 @@ void EnvironmentMapTechnique::render(Frame& frame) {
 std::vector<AuxiliaryImage> EnvironmentMapTechnique::auxiliaryImages() {
   return {{"irradiance_map",
            "the irradiance E(n) (W/m²) of every normal direction, laid out as the environment "
-           "map (row 0 the zenith)",
+           "map but with rows from pole to pole inclusive (row 0 the zenith, the last the nadir)",
            convolution_->layerImage(0, environment_->map().intensity)}};
 }
 
