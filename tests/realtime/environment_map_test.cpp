@@ -14,6 +14,7 @@
 #include "scene/mesh_builder.h"
 #include "scene/path_expression.h"
 #include "support/technique_frame.h"
+#include "support/test_materials.h"
 
 #include <gtest/gtest.h>
 
@@ -97,29 +98,6 @@ class AnalyticScene {
   std::vector<Quad> quads_;
 };
 
-scene::Material lambert(float albedo) {
-  scene::Material m;
-  m.name = "lambert";
-  m.diffuse = scene::Rgb(albedo);
-  return m;
-}
-
-scene::Material perfectMirror() {
-  scene::Material m;
-  m.name = "mirror";
-  m.type = scene::MaterialType::kMirror;
-  m.perfect_mirror = true;
-  return m;
-}
-
-scene::Material glass(float ior) {
-  scene::Material m;
-  m.name = "glass";
-  m.type = scene::MaterialType::kGlass;
-  m.ior = ior;
-  return m;
-}
-
 void addSphere(scene::Scene& s, AnalyticScene& analytic, const scene::Material& material,
                Sphere sphere) {
   scene::Mesh& mesh = scene::addMeshOfMaterial(s, material.name, material);
@@ -133,7 +111,7 @@ void addSphere(scene::Scene& s, AnalyticScene& analytic, const scene::Material& 
 // behind the camera, which no pixel sees and, with no visibility in §4.2, nothing else sees
 // either.
 void addHiddenMirror(scene::Scene& s) {
-  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "hidden mirror", perfectMirror());
+  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "hidden mirror", test::perfectMirrorMaterial());
   scene::appendSphere(mesh, s.camera.position + 2.0f * (s.camera.position - s.camera.look_at), 0.1f,
                       8, 16, false);
 }
@@ -184,15 +162,15 @@ TEST_P(ConstantEnvironment, GivesTheClosedForms) {
   s.camera.vertical_fov_deg = 40.0f;
   AnalyticScene analytic;
   const float rho = 0.7f;
-  scene::Material phong = lambert(0.3f);
+  scene::Material phong = test::lambertMaterial(0.3f);
   phong.name = "phong";
   phong.type = scene::MaterialType::kPhong;
   phong.specular = scene::Rgb(0.5f);
   phong.exponent = 20.0f;
-  addSphere(s, analytic, lambert(rho), {{-1.1f, 0.6f, 0.0f}, 0.5f});
+  addSphere(s, analytic, test::lambertMaterial(rho), {{-1.1f, 0.6f, 0.0f}, 0.5f});
   addSphere(s, analytic, phong, {{1.1f, 0.6f, 0.0f}, 0.5f});
-  addSphere(s, analytic, perfectMirror(), {{-1.1f, -0.6f, 0.0f}, 0.5f});
-  addSphere(s, analytic, glass(1.5f), {{1.1f, -0.6f, 0.0f}, 0.5f});
+  addSphere(s, analytic, test::perfectMirrorMaterial(), {{-1.1f, -0.6f, 0.0f}, 0.5f});
+  addSphere(s, analytic, test::glassMaterial(1.5f), {{1.1f, -0.6f, 0.0f}, 0.5f});
   if (GetParam())
     s.environment = constantMap(L, 4);
   else
@@ -257,7 +235,7 @@ TEST(EnvironmentMapTechnique, CosineSkyGivesTheClampedCosineIrradiance) {
   const float rho = 0.8f;
   const std::vector<float> tilts = {0.0f, kPi / 4, kPi / 2, 3 * kPi / 4};
   AnalyticScene analytic;
-  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "quads", lambert(rho));
+  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "quads", test::lambertMaterial(rho));
   for (std::size_t k = 0; k < tilts.size(); ++k) {
     // Normal (sin β, cos β, 0), facing the camera; side by side along z.
     const float b = tilts[k];
@@ -315,7 +293,7 @@ TEST(EnvironmentMapTechnique, HorizontalGroundReadsTheZenithsIrradiance) {
   s.camera.vertical_fov_deg = 40.0f;
   s.environment = scene::makeEnvironmentMap(2 * kMapHeight, kMapHeight, std::move(texels), "z");
   const float rho = 0.5f;
-  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "ground", lambert(rho));
+  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "ground", test::lambertMaterial(rho));
   scene::appendQuad(mesh, {-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3});
   addHiddenMirror(s);
   const TechniqueRunResult result = test::renderOneFrame(
@@ -349,9 +327,9 @@ TEST(EnvironmentMapTechnique, PerfectMirrorShowsTheTexelOfTheReflectedRay) {
   s.environment.rotation_deg = 30.0f;
   s.environment.intensity = 2.0f;
   AnalyticScene analytic;
-  addSphere(s, analytic, glass(1.0f), {{0.8f, 0.6f, 0.5f}, 0.5f});
+  addSphere(s, analytic, test::glassMaterial(1.0f), {{0.8f, 0.6f, 0.5f}, 0.5f});
   const Quad floor{{0.0f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.5f}};
-  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "floor mirror", perfectMirror());
+  scene::Mesh& mesh = scene::addMeshOfMaterial(s, "floor mirror", test::perfectMirrorMaterial());
   scene::appendQuad(mesh, floor.centre - floor.u - floor.v, floor.centre + floor.u - floor.v,
                     floor.centre + floor.u + floor.v, floor.centre - floor.u + floor.v);
   analytic.add(floor);
@@ -394,7 +372,7 @@ TEST(EnvironmentMapTechnique, StatisticsCountTheConvolution) {
   s.camera.look_at = {0.0f, 0.0f, 0.0f};
   s.environment = constantMap(scene::Rgb(1.0f), 4);
   for (float exponent : {10.0f, 50.0f, 10.0f}) {
-    scene::Material m = lambert(0.2f);
+    scene::Material m = test::lambertMaterial(0.2f);
     m.type = scene::MaterialType::kPhong;
     m.specular = scene::Rgb(0.3f);
     m.exponent = exponent;

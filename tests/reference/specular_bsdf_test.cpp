@@ -7,6 +7,7 @@
 #include "reference/rng.h"
 #include "scene/fresnel_shared.h"
 #include "support/statistical_test.h"
+#include "support/test_materials.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -22,21 +23,13 @@ constexpr int kSides = 2;
 constexpr test::TestFamily kFamily(0.01, kAngles* kSides);
 constexpr int kSamples = 100000;
 
-scene::Material glass(float ior) {
-  scene::Material m;
-  m.name = "glass";
-  m.type = scene::MaterialType::kGlass;
-  m.ior = ior;
-  return m;
-}
-
 // wo at angle θ (cos θ = `cos_o`) from the normal +z, in the xz plane.
 glm::vec3 direction(float cos_o) {
   return {std::sqrt(std::max(0.0f, 1.0f - cos_o * cos_o)), 0.0f, cos_o};
 }
 
 TEST(GlassBsdf, ChoosesReflectionAndRefractionWithTheirFresnelProbabilities) {
-  const scene::Material m = glass(1.5f);
+  const scene::Material m = test::glassMaterial(1.5f);
   const glm::vec3 n(0, 0, 1);
   SampleStream random(7, 0, 0);
   for (bool outside : {true, false}) {
@@ -64,7 +57,8 @@ TEST(GlassBsdf, ChoosesReflectionAndRefractionWithTheirFresnelProbabilities) {
 
 TEST(GlassBsdf, DirectionsFollowReflectionAndSnellsLaw) {
   const glm::vec3 n(0, 0, 1);
-  const scene::Material m = glass(1.5f);  // a Bsdf refers to its material: it must outlive it
+  const scene::Material m =
+      test::glassMaterial(1.5f);  // a Bsdf refers to its material: it must outlive it
   for (bool outside : {true, false}) {
     const float eta = outside ? 1.5f : 1.0f / 1.5f;
     const Bsdf bsdf(m, n, n, direction(0.8f), outside);
