@@ -64,7 +64,7 @@ struct JobReference {
 JobReference classReference(const PreparedJob& p) {
   return {referenceClass(p), false};
 }
-constexpr JobReference kFullReference{scene::PathClass{}, true};
+JobReference fullReference() { return {scene::PathClass{}, true}; }
 
 // The spec of the job's reference, or of its obscurance (then the class is every path, which
 // keeps the key canonical: the renderer ignores it).
@@ -149,7 +149,7 @@ void measureAgainstFullReference(const PreparedJob& p, const JobEnvironment& env
                                  PixelMasks masks, results::JobResult& result) {
   if (!needsFullReference(p)) return;
   results::ReferenceUse use;
-  const ref::StoredReference full = obtainReference(p, env, kFullReference, &use);
+  const ref::StoredReference full = obtainReference(p, env, fullReference(), &use);
   result.full_reference = use;
   result.outputs.full_reference_exr = copyReferenceExr(files, full);
   result.metrics_full = measure(full.mean, test, p.job->settings.metrics, masks).values;
@@ -416,7 +416,7 @@ namespace {
 // for an obscurance (referenceSpec makes it the obscurance's).
 std::vector<JobReference> jobReferenceList(const PreparedJob& p) {
   std::vector<JobReference> references = {classReference(p)};
-  if (needsFullReference(p)) references.push_back(kFullReference);
+  if (needsFullReference(p)) references.push_back(fullReference());
   return references;
 }
 
