@@ -9,11 +9,17 @@
 // it (end walls at z = 0 and z = 12). The `detail` parameter d multiplies every tessellation
 // count, so the triangle count grows as d²: 3 384 at d = 1 (the book's chamber has 3 335),
 // 85 240 at d = 5 (the scale of the paper's art gallery), for timing sweeps.
+//
+// sky=true is the book's Fig. 4.15, "a difficult scene, where only a small fraction of the
+// environment is visible from surface points inside the room": four roof lights cut in the vault's
+// crown let in the Preetham sky (scene/sky_parameters.h, as `outdoor` builds it) and, with the
+// default sun 70° high behind the camera, patches of sunlight on the nave's floor.
 #include "common/input_error.h"
 #include "scene/builtin_scenes.h"
 #include "scene/chamber_geometry.h"
 #include "scene/mesh_builder.h"
 #include "scene/metals.h"
+#include "scene/sky_parameters.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -56,6 +62,17 @@ constexpr double kArchRadius = kBay / 2 - kCapitalHalfSize;
 constexpr double kAisleCeilingY = 4.4;  // flat ceiling of the aisles
 constexpr double kVaultSpringY = 5.0;   // the nave vault's springing line (crown at 7.2 m)
 constexpr double kWainscotY = 1.0;      // top of the red marble band around the walls
+
+// sky=true: roof lights along the crown, each the vault's two crown segments across (22.5° of arc,
+// 0.86 m wide at the crown, 7.2 m up) and one metre along, at z = 1, 4, 7 and 10 m (symmetric
+// about the middle of the nave). They are whole cells of the vault's tessellation at every
+// detail level, so the vault keeps its vertices and the rest of the shell stays closed.
+constexpr int kRoofLightRows[] = {1, 4, 7, 10};  // metre rows of the vault (kVaultRows = 12)
+// The default sun: 70° high, azimuth 270° (towards −z, behind the camera, which looks along +z),
+// so that the light falling through the roof lights lands on the floor 2.6 m further along the
+// nave, in view.
+constexpr const char* kSkySunElevation = "70";
+constexpr const char* kSkySunAzimuth = "270";
 
 // Tessellation at detail 1; each count is multiplied by the detail level.
 constexpr int kFloorCellsAcross = 16, kFloorCellsAlong = 24;  // 0.5 m tiles
@@ -106,8 +123,19 @@ void addMeshes(Scene& scene, std::initializer_list<Mesh*> meshes) {
   for (Mesh* mesh : meshes) scene.meshes.push_back(std::move(*mesh));
 }
 
-// Floor, aisle walls, aisle ceilings, end walls and the nave's vault: the closed shell.
-void addShell(Scene& scene, const Materials& m, int d) {
+// Whether vault cell (i across, j along) at detail d is a roof light: the two crown segments
+// (kVaultSegments·d across, the crown at i = kVaultSegments·d/2) in the rows of kRoofLightRows.
+bool isRoofLight(int i, int j, int d) {
+  const int crown = kVaultSegments * d / 2;
+  if (i < crown - d || i >= crown + d) return false;
+  for (int row : kRoofLightRows)
+    if (j / d == row) return true;
+  return false;
+}
+
+// Floor, aisle walls, aisle ceilings, end walls and the nave's vault: the closed shell, with roof
+// lights in the vault when `roof_lights`.
+void addShell(Scene& scene, const Materials& m, int d, bool roof_lights) {
   Mesh floor = makeMesh("floor", m.floor);
   appendPanel(floor, {-kHalfWidth, 0, 0}, {2 * kHalfWidth, 0, 0}, {0, 0, kLength},
               kFloorCellsAcross * d, kFloorCellsAlong * d, {0, 1, 0});
@@ -142,8 +170,10 @@ void addShell(Scene& scene, const Materials& m, int d) {
                   kLunetteRings * d);
   }
   Mesh vault = makeMesh("vault", m.wall);
+  chamber::PatchCells openings;
+  if (roof_lights) openings = [d](int i, int j) { return isRoofLight(i, j, d); };
   appendBarrelVault(vault, kVaultSpringY, kNaveHalfWidth, 0.0, kLength, kVaultSegments * d,
-                    kVaultRows * d);
+                    kVaultRows * d, openings);
   addMeshes(scene,
             {&floor, &wainscot, &aisle_walls, &aisle_ceilings, &end_walls, &lunettes, &vault});
 }
@@ -267,47 +297,11 @@ glm::vec3 toVec3(const std::vector<double>& v) {
   return {float(v[0]), float(v[1]), float(v[2])};
 }
 
-}  // namespace
-
-ParameterTable chamberParameters() {
-  return {
-      numericParameter(
-          "detail", ParameterType::kInteger, "1", 1, 5, "",
-          "tessellation level d: about 3400·d² triangles (1: 3384, like the book's chamber; 5: "
-          "85240)"),
-      numericParameter(
-          "light_position", ParameterType::kVector3, "0,6.6,3.5", -100, 100, "m",
-          "spot light position (the hall spans x in [-4, 4], y in [0, 7.2], z in [0, 12])"),
-      numericParameter("light_target", ParameterType::kVector3, "0.4,0,7.5", -100, 100, "m",
-                       "point the spot light aims at (on the floor, y = 0, by default)"),
-      numericParameter("light_intensity", ParameterType::kNumber, "500", 0, 1e6, "W/sr",
-                       "spot light intensity on its axis (white)"),
-      choiceParameter("specular", "none", {"none", "objects"},
-                      "specular objects on the nave's floor (book Figs. 6.9 and 6.11): an "
-                      "aluminium torus for the teapot, a glass sphere of index 1.3 for the skull, "
-                      "a thin glass pane and a thin silver mirror panel"),
-  };
-}
-
-Scene makeChamber(const ParameterValues& parameters) {
-  Scene scene;
-  scene.name = "chamber";
-  scene.provenance =
-      "procedural marble chamber after Szirmay-Kalos et al. Fig. 8.12/8.13 (3335 triangles) and "
-      "Nijasure et al.'s hall: vaulted nave, arcades of round arches on pillars, spot light aimed "
-      "at the floor";
-  const int d = parameters.integer("detail");
-
-  // Geometry.
-  const Materials materials = addMaterials(scene);
-  addShell(scene, materials, d);
-  addArcades(scene, materials, d);
-  if (parameters.text("specular") == "objects") addSpecularObjects(scene);
-
-  // The spot light, hung under the crown of the vault. Its default (500 W/sr from 7.7 m, reaching
-  // the floor at 31° from the normal) gives the middle of the lit floor a diffuse radiance of
-  // about 0.3/π · 500 · cos 31° / 7.7² ≈ 0.7, and the indirect light adds some tenths: bright
-  // but not clipped by the sRGB display transform at exposure 0.
+// The spot light, hung under the crown of the vault. Its default (500 W/sr from 7.7 m, reaching
+// the floor at 31° from the normal) gives the middle of the lit floor a diffuse radiance of
+// about 0.3/π · 500 · cos 31° / 7.7² ≈ 0.7, and the indirect light adds some tenths: bright
+// but not clipped by the sRGB display transform at exposure 0.
+void addSpotLight(Scene& scene, const ParameterValues& parameters) {
   const glm::vec3 position = toVec3(parameters.vector3("light_position"));
   const glm::vec3 target = toVec3(parameters.vector3("light_target"));
   if (glm::length(target - position) < 1e-3f)
@@ -322,6 +316,66 @@ Scene makeChamber(const ParameterValues& parameters) {
   spot.cone_angle_deg = 30.0f;
   spot.falloff_exponent = 2.0f;
   scene.spot_lights.push_back(spot);
+}
+
+}  // namespace
+
+ParameterTable chamberParameters() {
+  return joinParameterTables(
+      {{
+           numericParameter("detail", ParameterType::kInteger, "1", 1, 5, "",
+                            "tessellation level d: about 3400·d² triangles (1: 3384, like the "
+                            "book's chamber; 5: "
+                            "85240)"),
+           numericParameter(
+               "light_position", ParameterType::kVector3, "0,6.6,3.5", -100, 100, "m",
+               "spot light position (the hall spans x in [-4, 4], y in [0, 7.2], z in [0, 12])"),
+           numericParameter("light_target", ParameterType::kVector3, "0.4,0,7.5", -100, 100, "m",
+                            "point the spot light aims at (on the floor, y = 0, by default)"),
+           numericParameter("light_intensity", ParameterType::kNumber, "500", 0, 1e6, "W/sr",
+                            "spot light intensity on its axis (white)"),
+           choiceParameter(
+               "specular", "none", {"none", "objects"},
+               "specular objects on the nave's floor (book Figs. 6.9 and 6.11): an "
+               "aluminium torus for the teapot, a glass sphere of index 1.3 for the skull, "
+               "a thin glass pane and a thin silver mirror panel"),
+           booleanParameter(
+               "sky", false,
+               "book Fig. 4.15: four roof lights (0.86 × 1 m) in the vault's crown open "
+               "the hall to the sky (the environment parameters below; ignored without "
+               "it)"),
+           choiceParameter(
+               "spot_light", "auto", {"auto", "on", "off"},
+               "the spot light: auto is on without the sky and off with it (the sky and "
+               "sun through the roof lights are then the only light)"),
+       },
+       skyParameters({kSkySunElevation, kSkySunAzimuth,
+                      "(the camera looks along +z; 270 puts the sun behind it, so that sunlight "
+                      "through the roof lights lands on the floor in view)"})});
+}
+
+Scene makeChamber(const ParameterValues& parameters) {
+  Scene scene;
+  scene.name = "chamber";
+  scene.provenance =
+      "procedural marble chamber after Szirmay-Kalos et al. Fig. 8.12/8.13 (3335 triangles) and "
+      "Nijasure et al.'s hall: vaulted nave, arcades of round arches on pillars, spot light aimed "
+      "at the floor";
+  const int d = parameters.integer("detail");
+
+  // Geometry.
+  const Materials materials = addMaterials(scene);
+  const bool sky = parameters.boolean("sky");
+  addShell(scene, materials, d, sky);
+  addArcades(scene, materials, d);
+  if (parameters.text("specular") == "objects") addSpecularObjects(scene);
+
+  if (sky) {
+    scene.environment = makeSkyEnvironment(parameters, "chamber");
+    scene.provenance += "; sky=true: roof lights open to the Preetham sky (book Fig. 4.15)";
+  }
+  const std::string& spot_light = parameters.text("spot_light");
+  if (spot_light == "on" || (spot_light == "auto" && !sky)) addSpotLight(scene, parameters);
 
   // The camera stands near the entrance at eye height, slightly off the axis, and looks down the
   // nave: the arcades on both sides, the vault and the lit floor ahead.

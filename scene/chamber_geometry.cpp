@@ -58,13 +58,15 @@ glm::dvec2 unitCirclePoint(int i, int n) {
   return {std::cos(angle), std::sin(angle)};
 }
 
-void appendPatch(Mesh& mesh, int nu, int nv, const PatchPoint& point, const PatchFacing& facing) {
+void appendPatch(Mesh& mesh, int nu, int nv, const PatchPoint& point, const PatchFacing& facing,
+                 const PatchCells& leave_out) {
   const auto base = static_cast<std::uint32_t>(mesh.positions.size());
   for (int j = 0; j <= nv; ++j)
     for (int i = 0; i <= nu; ++i) addVertex(mesh, point(i, j));
   auto index = [&](int i, int j) { return base + std::uint32_t(j * (nu + 1) + i); };
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
+      if (leave_out && leave_out(i, j)) continue;
       addFacingTriangle(mesh, index(i, j), index(i + 1, j), index(i + 1, j + 1), facing);
       addFacingTriangle(mesh, index(i, j), index(i + 1, j + 1), index(i, j + 1), facing);
     }
@@ -104,14 +106,14 @@ void appendShaft(Mesh& mesh, glm::dvec3 base_centre, double radius, double heigh
 }
 
 void appendBarrelVault(Mesh& mesh, double spring_y, double radius, double z0, double z1,
-                       int segments, int rows) {
+                       int segments, int rows, const PatchCells& openings) {
   appendPatch(
       mesh, segments, rows,
       [&](int i, int j) {
         const glm::dvec2 c = unitCirclePoint(i, segments);
         return glm::dvec3(radius * c.x, spring_y + radius * c.y, mix(z0, z1, j, rows));
       },
-      [&](glm::dvec3 p) { return glm::dvec3(-p.x, spring_y - p.y, 0); });
+      [&](glm::dvec3 p) { return glm::dvec3(-p.x, spring_y - p.y, 0); }, openings);
 }
 
 void appendLunette(Mesh& mesh, double z, double facing_z, double spring_y, double radius,

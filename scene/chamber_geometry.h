@@ -30,7 +30,12 @@ glm::dvec2 unitCirclePoint(int i, int n);
 // with facing(centroid): the caller says which way is "into the hall" and the winding follows.
 using PatchPoint = std::function<glm::dvec3(int i, int j)>;
 using PatchFacing = std::function<glm::dvec3(glm::dvec3 centroid)>;
-void appendPatch(Mesh& mesh, int nu, int nv, const PatchPoint& point, const PatchFacing& facing);
+// Cells (i, j) (0 ≤ i < nu, 0 ≤ j < nv) for which `leave_out` is true get no triangles: holes of
+// whole cells. Every point is still added (a hole's own corners are shared with the cells around
+// it), so that the vertex list, and with no holes the whole mesh, is what it is without them.
+using PatchCells = std::function<bool(int i, int j)>;
+void appendPatch(Mesh& mesh, int nu, int nv, const PatchPoint& point, const PatchFacing& facing,
+                 const PatchCells& leave_out = {});
 
 // The parallelogram corner + s·u + t·v (s, t ∈ [0, 1]) split into nu × nv cells, front side
 // towards `facing`.
@@ -48,8 +53,10 @@ void appendShaft(Mesh& mesh, glm::dvec3 base_centre, double radius, double heigh
 
 // A barrel vault: the upper half of the cylinder of `radius` around the axis (x = 0, y = spring_y)
 // from z0 to z1, facing the axis (into the hall), with `segments` (even) across and `rows` along.
+// `openings` leaves out the cells (i across from x = +radius, j along from z0) it names: roof
+// lights whose edges are the vault's own grid lines.
 void appendBarrelVault(Mesh& mesh, double spring_y, double radius, double z0, double z1,
-                       int segments, int rows);
+                       int segments, int rows, const PatchCells& openings = {});
 
 // The half disc that closes a barrel vault at its end wall z = z: centre (0, spring_y), `segments`
 // around (even) and `rings` from the centre out, front side towards facing_z (±1).

@@ -12,7 +12,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "scene/metals.h"
-#include "scene/preetham_sky.h"
+#include "scene/sky_parameters.h"
 
 #include <fmt/format.h>
 
@@ -39,11 +39,6 @@ constexpr glm::vec3 kTorusAxis{0.0f, 1.0f, 0.6f};
 constexpr glm::vec3 kCameraPosition{0.0f, 1.5f, 7.0f};
 constexpr glm::vec3 kCameraLookAt{0.0f, 0.6f, 0.0f};
 constexpr float kCameraFovDeg = 30.0f;
-// The sky's texels are in kcd/m² (scene/preetham_sky.h); the scene takes them in units of
-// 20 kcd/m², so that the sunlit ground (about 40 kcd/m² under the default sun) has a radiance of
-// about 2 and the sky's zenith about 0.25: within the range the report's images show at exposure
-// 0. `environment_intensity` scales further (and alone scales a map read from a file).
-constexpr float kSkyScale = 1.0f / 20.0f;
 
 Material lambert(std::string name, Rgb diffuse) {
   Material m;
@@ -99,55 +94,18 @@ void addObjects(Scene& scene, const std::string& which) {
   }
 }
 
-EnvironmentMap environment(const ParameterValues& parameters) {
-  EnvironmentMap map;
-  const std::string& source = parameters.text("environment");
-  if (source == "sky") {
-    SkyParameters sky;
-    sky.sun_elevation_deg = float(parameters.number("sun_elevation"));
-    sky.sun_azimuth_deg = float(parameters.number("sun_azimuth"));
-    sky.turbidity = float(parameters.number("turbidity"));
-    sky.height = parameters.integer("sky_resolution");
-    map = makePreethamSky(sky);
-    map.intensity = kSkyScale;
-  } else {
-    try {
-      map = loadEnvironmentMap(source);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("scene 'outdoor' parameter environment: {}", e.what()));
-    }
-  }
-  map.rotation_deg = float(parameters.number("environment_rotation"));
-  map.intensity *= float(parameters.number("environment_intensity"));
-  return map;
-}
-
 }  // namespace
 
 ParameterTable outdoorParameters() {
-  return {
-      choiceParameter("objects", "all", {"all", "diffuse", "glossy", "mirror", "glass", "torus"},
-                      "what stands on the ground: the row of a white Lambertian sphere, a glossy "
-                      "Phong sphere (0.2 + 0.6, shininess 20), a silver mirror sphere, a glass "
-                      "sphere (index 1.5) and a grey torus, or one of them alone in the middle"),
-      textParameter("environment", "sky",
-                    "the light: 'sky' (the Preetham clear sky with its sun, below) or the path "
-                    "of a latitude-longitude EXR twice as wide as high"),
-      numericParameter("sun_elevation", ParameterType::kNumber, "30", 0, 90, "degrees",
-                       "the sky's sun above the horizon"),
-      numericParameter("sun_azimuth", ParameterType::kNumber, "120", 0, 360, "degrees",
-                       "the sky's sun from +x towards +z (the camera looks along -z; 120 puts "
-                       "the sun behind the camera, to its left)"),
-      numericParameter("turbidity", ParameterType::kNumber, "3", 2, 10, "",
-                       "the sky's haze, 2 (clear) to 10 (hazy), Preetham's fitted range"),
-      integerChoiceParameter("sky_resolution", 128, {32, 64, 128, 256, 512, 1024}, "texels",
-                             "the sky map's height (its width is twice that)"),
-      numericParameter("environment_rotation", ParameterType::kNumber, "0", -360, 360, "degrees",
-                       "turns the map about +y, from +x towards -z"),
-      numericParameter("environment_intensity", ParameterType::kNumber, "1", 0, 1e6, "",
-                       "scales the map's radiance (the sky's texels are taken in units of "
-                       "20 kcd/m²)"),
-  };
+  return joinParameterTables({
+      {choiceParameter("objects", "all", {"all", "diffuse", "glossy", "mirror", "glass", "torus"},
+                       "what stands on the ground: the row of a white Lambertian sphere, a glossy "
+                       "Phong sphere (0.2 + 0.6, shininess 20), a silver mirror sphere, a glass "
+                       "sphere (index 1.5) and a grey torus, or one of them alone in the middle")},
+      skyParameters({"30", "120",
+                     "(the camera looks along -z; 120 puts the sun behind the camera, to its "
+                     "left)"}),
+  });
 }
 
 Scene makeOutdoor(const ParameterValues& parameters) {
@@ -160,7 +118,7 @@ Scene makeOutdoor(const ParameterValues& parameters) {
   appendQuad(addMeshOfMaterial(scene, "ground", lambert("ground", Rgb(0.5f))), {-g, 0, -g},
              {-g, 0, g}, {g, 0, g}, {g, 0, -g});
   addObjects(scene, parameters.text("objects"));
-  scene.environment = environment(parameters);
+  scene.environment = makeSkyEnvironment(parameters, "outdoor");
 
   scene.camera.position = kCameraPosition;
   scene.camera.look_at = kCameraLookAt;
