@@ -41,6 +41,7 @@ IrradianceVolumeTechnique::IrradianceVolumeTechnique(const ParameterValues& p)
       band_(p.integer("sh_order")),
       indirect_shadows_(p.text("indirect_shadows") == "on"),
       rasterise_every_frame_(p.text("motion") == "objects"),
+      objects_bounds_(p.text("grid_bounds") == "objects"),
       surface_lighting_(p) {
   // Refused when the technique is created, so a suite is refused before it runs anything.
   checkProbeAtlasSize(grid_n_, face_, kMaxAtlasTexels);
@@ -48,7 +49,9 @@ IrradianceVolumeTechnique::IrradianceVolumeTechnique(const ParameterValues& p)
 
 void IrradianceVolumeTechnique::prepare(const GpuScene& scene, int width, int height) {
   scene_ = &scene;
-  grid_ = makeProbeGrid(scene.boundsMin(), scene.boundsMax(), grid_n_, face_, kMaxAtlasTexels);
+  const ProbeBounds bounds = objects_bounds_ ? objectsProbeBounds(scene.scene())
+                                             : ProbeBounds{scene.boundsMin(), scene.boundsMax()};
+  grid_ = makeProbeGrid(bounds.min, bounds.max, grid_n_, face_, kMaxAtlasTexels);
   const float extent = glm::length(scene.boundsMax() - scene.boundsMin());
   near_ = 1e-4f * extent;
   far_ = 2.0f * extent;
@@ -196,6 +199,11 @@ TechniqueInfo irradianceVolumeTechniqueInfo() {
       "irradiance volume: cube maps at grid points projected to spherical harmonics, k bounces "
       "of indirect light over shadow-mapped direct light";
   info.source = "Nijasure, Pattanaik & Goel, Real-Time Global Illumination on GPU (2005)";
+  // An environment map lights the surfaces through DirectLighting's light samples and shows as the
+  // camera's background; the probes' cube maps keep it out (their background texels stay black),
+  // so the volume's indirect light is light reflected by surfaces only, as the reference splits
+  // its path classes: the map's light at the first vertex is direct, never indirect.
+  info.renders_environment_map = true;
   info.parameters = joinParameterTables(
       {{
            numericParameter(
@@ -203,6 +211,10 @@ TechniqueInfo irradianceVolumeTechniqueInfo() {
                "iterations of indirect light (the paper's 2); 0 is direct light alone"),
            numericParameter("grid", ParameterType::kInteger, "4", 2, 16, "probes per axis",
                             "uniform grid of n×n×n probes over the scene bounds (the paper's 4)"),
+           choiceParameter(
+               "grid_bounds", "scene", {"scene", "objects"},
+               "the box the grid spans: the scene's bounds, or the bounds of every mesh but the "
+               "largest (an outdoor scene's ground) grown by their extent, within the scene's"),
            numericParameter("face", ParameterType::kInteger, "16", 4, 64, "texels",
                             "cube-map face size at each probe (the paper's 16)"),
            numericParameter(

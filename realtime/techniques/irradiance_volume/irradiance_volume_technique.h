@@ -49,7 +49,7 @@ class IrradianceVolumeTechnique final : public Technique {
   glm::vec3 lightOffset(const Frame& frame) const;
 
   int bounces_, grid_n_, face_, band_;
-  bool indirect_shadows_, rasterise_every_frame_;
+  bool indirect_shadows_, rasterise_every_frame_, objects_bounds_;
   SurfaceLighting surface_lighting_;
   const GpuScene* scene_ = nullptr;
   ProbeGrid grid_;

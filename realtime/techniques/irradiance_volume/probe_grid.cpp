@@ -5,7 +5,11 @@
 
 #include <fmt/format.h>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 #include <cmath>
+#include <limits>
 
 namespace gib::rt {
 
@@ -56,6 +60,51 @@ ProbeGrid makeProbeGrid(const glm::vec3& bounds_min, const glm::vec3& bounds_max
   grid.origin = bounds_min;
   grid.cell = (bounds_max - bounds_min) / float(n);
   return grid;
+}
+
+namespace {
+
+ProbeBounds emptyBounds() {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  return {glm::vec3(kInf), glm::vec3(-kInf)};
+}
+
+ProbeBounds meshBounds(const scene::Mesh& mesh) {
+  ProbeBounds b = emptyBounds();
+  for (const glm::vec3& p : mesh.positions) {
+    b.min = glm::min(b.min, p);
+    b.max = glm::max(b.max, p);
+  }
+  return b;
+}
+
+void grow(ProbeBounds& b, const ProbeBounds& other) {
+  b.min = glm::min(b.min, other.min);
+  b.max = glm::max(b.max, other.max);
+}
+
+}  // namespace
+
+ProbeBounds objectsProbeBounds(const scene::Scene& scene) {
+  ProbeBounds all = emptyBounds();
+  std::size_t largest = 0;
+  float largest_diagonal = -1.0f;
+  std::vector<ProbeBounds> meshes;
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    meshes.push_back(meshBounds(scene.meshes[i]));
+    grow(all, meshes.back());
+    const float diagonal = glm::length(meshes.back().max - meshes.back().min);
+    if (diagonal > largest_diagonal) {
+      largest_diagonal = diagonal;
+      largest = i;
+    }
+  }
+  if (meshes.size() < 2) return all;
+  ProbeBounds objects = emptyBounds();
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    if (i != largest) grow(objects, meshes[i]);
+  const glm::vec3 extent = objects.max - objects.min;
+  return {glm::max(objects.min - extent, all.min), glm::min(objects.max + extent, all.max)};
 }
 
 }  // namespace gib::rt

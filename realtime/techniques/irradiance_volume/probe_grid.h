@@ -5,6 +5,7 @@
 
 #include "realtime/gbuffer/gbuffer.h"
 #include "realtime/techniques/irradiance_volume/irradiance_volume_shared.h"
+#include "scene/scene.h"
 
 #include <glm/vec3.hpp>
 
@@ -42,5 +43,16 @@ void checkProbeAtlasSize(int n, int face, long long max_texels);
 // 64² faces would need 100 M texels per buffer).
 ProbeGrid makeProbeGrid(const glm::vec3& bounds_min, const glm::vec3& bounds_max, int n, int face,
                         long long max_texels);
+
+// The box the grid spans with grid_bounds=objects: an outdoor scene's ground (100 m across in
+// `outdoor`) would spread a grid over the scene's bounds so thin that the objects fall between
+// probes tens of metres apart. The bounds of every mesh but the one with the largest bounding box
+// (the ground, or a room's shell), grown on each side by their own extent along each axis (so that
+// a probe next to a lone sphere stands outside it) and kept within the whole scene's bounds. A
+// scene of one mesh keeps its bounds.
+struct ProbeBounds {
+  glm::vec3 min{0.0f}, max{0.0f};
+};
+ProbeBounds objectsProbeBounds(const scene::Scene& scene);
 
 }  // namespace gib::rt
