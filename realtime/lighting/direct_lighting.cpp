@@ -74,6 +74,7 @@ void DirectLighting::prepare(const GpuScene& scene) {
   samples_ = makeLightSamples(
       scene.scene(), area_lights_ ? scene.emitters() : std::vector<EmitterTriangle>{},
       light_samples_, environment_samples_ ? light_samples_ : 0, 1e-3f * extent);
+  samples_.insert(samples_.end(), extra_samples_.begin(), extra_samples_.end());
   shadow_maps_.emplace(shadow_settings_, scene,
                        shadowBatchCapacity(shadow_settings_, samples_.size()));
   // Where camera rays leave a scene with an environment map, the pass shows the map (book

@@ -62,6 +62,9 @@ class DirectLighting {
   // environment itself (environment_map's convolved maps) leaves it out, as `area_lights` false
   // leaves the emitters.
   void setEnvironmentSamples(bool enabled) { environment_samples_ = enabled; }
+  // Light samples the caller adds after the scene's, set before prepare(): environment_shadows'
+  // cells of the environment (book §4.2.3), each a directional sample with its shadow map.
+  void setExtraSamples(std::vector<LightSample> samples) { extra_samples_ = std::move(samples); }
   // Places the light samples and builds the shadow maps and programs.
   void prepare(const GpuScene& scene);
 
@@ -97,6 +100,7 @@ class DirectLighting {
   int light_samples_;
   bool area_lights_;
   bool environment_samples_ = true;
+  std::vector<LightSample> extra_samples_;
   std::vector<LightSample> samples_;
   glm::vec3 light_offset_{0.0f};
   std::optional<ShadowMaps> shadow_maps_;

@@ -21,7 +21,10 @@ using glm::pow;
 const int kMaxLightBatch = 32;
 
 struct GpuLightSample {
-  vec4 position;         // xyz point sample's position; w added to the squared distance
+  // xyz point sample's position; w a point sample's term added to the squared distance, a
+  // directional sample's cap half-angle (radians, 0 but for environment_shadows' cells:
+  // cell_reflectivity_shared.h)
+  vec4 position;
   vec4 axis;             // xyz spot axis or direction of travel (unit); w cos of the cone
   vec4 intensity;        // rgb intensity (irradiance for directional); w falloff exponent
   mat4 view_projection;  // directional: world to the orthographic map's clip space

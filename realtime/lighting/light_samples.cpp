@@ -12,7 +12,9 @@
 namespace gib::rt {
 
 gpu::GpuLightSample toGpuLightSample(const LightSample& s, const glm::mat4& view_projection) {
-  return {glm::vec4(s.position, s.distance_squared_offset), glm::vec4(s.axis, s.cos_cone),
+  const float w =
+      s.kind == LightSampleKind::kDirectional ? s.cap_half_angle : s.distance_squared_offset;
+  return {glm::vec4(s.position, w), glm::vec4(s.axis, s.cos_cone),
           glm::vec4(s.intensity.x, s.intensity.y, s.intensity.z, s.exponent), view_projection};
 }
 

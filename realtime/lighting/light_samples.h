@@ -28,6 +28,10 @@ struct LightSample {
   // Added to the squared distance (light_irradiance.glsl): 0 but for a virtual light that stands
   // for a patch. The shading passes read samples as gpu::GpuLightSample (ShadowMaps uploads them).
   float distance_squared_offset = 0.0f;
+  // A directional sample that stands for a cell of the environment (environment_shadows): the
+  // half-angle of the cap of the cell's solid angle, radians; 0 for a light that is a direction.
+  // Carried in GpuLightSample::position.w, which a directional sample does not otherwise read.
+  float cap_half_angle = 0.0f;
 };
 
 // The sample as the shading passes read it (and pointSampleIrradiance takes it); a directional
