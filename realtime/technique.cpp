@@ -6,6 +6,7 @@
 #include "realtime/techniques/distance_map_gather/distance_map_gather_technique.h"
 #include "realtime/techniques/distance_map_specular/distance_map_specular_technique.h"
 #include "realtime/techniques/environment_map/environment_map_technique.h"
+#include "realtime/techniques/environment_shadows/environment_shadows_technique.h"
 #include "realtime/techniques/gpu_ray_tracing/gpu_ray_tracing_technique.h"
 #include "realtime/techniques/hemispherical_gather/hemispherical_gather_technique.h"
 #include "realtime/techniques/illumination_network/illumination_network_technique.h"
@@ -15,6 +16,7 @@
 #include "realtime/techniques/jittered_light_sampling/jittered_light_sampling_technique.h"
 #include "realtime/techniques/light_path_map/light_path_map_technique.h"
 #include "realtime/techniques/obscurances/obscurances_technique.h"
+#include "realtime/techniques/prt/prt_technique.h"
 #include "realtime/techniques/spherical_billboards/spherical_billboards_technique.h"
 #include "realtime/techniques/stochastic_radiosity/stochastic_radiosity_technique.h"
 
@@ -42,7 +44,9 @@ const std::vector<TechniqueInfo>& techniqueCatalogue() {
                                                        gpuRayTracingTechniqueInfo(),
                                                        distanceMapSpecularTechniqueInfo(),
                                                        distanceMapGatherTechniqueInfo(),
-                                                       environmentMapTechniqueInfo()};
+                                                       environmentMapTechniqueInfo(),
+                                                       prtTechniqueInfo(),
+                                                       environmentShadowsTechniqueInfo()};
   return catalogue;
 }
 
@@ -103,6 +107,18 @@ std::optional<std::string> missingNeed(const TechniqueInfo& info, const scene::S
   return missingSceneNeed(info, scene);
 }
 
+namespace {
+
+// The techniques that render environment maps, from the catalogue, for the refusal's fix.
+std::string environmentMapTechniqueNames() {
+  std::vector<std::string> names;
+  for (const TechniqueInfo& info : techniqueCatalogue())
+    if (info.renders_environment_map) names.push_back(info.name);
+  return joinNames(names, ", ");
+}
+
+}  // namespace
+
 std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const scene::Scene& scene) {
   // The shading passes know Lambert and Phong only: a technique that does not say it renders
   // mirrors or glass would draw them as diffuse surfaces, a wrong image without an error.
@@ -114,8 +130,8 @@ std::optional<std::string> missingSceneNeed(const TechniqueInfo& info, const sce
   if (!scene.environment.empty() && !info.renders_environment_map)
     return fmt::format(
         "technique '{}' does not render environment maps and scene '{}' has one; use the "
-        "reference, direct or environment_map, or a scene without a map",
-        info.name, scene.name);
+        "reference, {}, or a scene without a map",
+        info.name, scene.name, environmentMapTechniqueNames());
   for (TechniqueNeed need : info.needs) {
     switch (need) {
       case TechniqueNeed::kRayCaster:

@@ -3,7 +3,11 @@
 // outdoor scene's torus and ground; CPCA on a set of the size the benchmark cpca_bench.cpp does
 // not cover (5000 vectors of one channel's 36 coefficients); and the per-frame projection at the
 // book's order 6: the rotation of 36 RGB coefficients about +y and 3·K·(M + 1) dot products of
-// 108 values.
+// 108 values. And a frame at 512² of the torus on the ground (BM_PrtFrame): the shared surface
+// lighting, the projection and the vertices' draw, after a preprocessing kept short (64 rays, 1 m
+// edges): the frame's cost does not depend on the rays, only on the vertices.
+#include "support/technique_frames.h"
+
 #include "realtime/prt/cpca.h"
 #include "realtime/techniques/prt/prt_mesh.h"
 #include "realtime/techniques/prt/prt_projection.h"
@@ -93,6 +97,12 @@ void BM_PrtLightProjection(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_PrtLightProjection)->Args({16, 8})->Args({256, 24})->Unit(benchmark::kMicrosecond);
+
+void BM_PrtFrame(benchmark::State& state) {
+  benchmarkTechniqueFrames(state, "prt", {"rays=64", "max_edge=1"}, "outdoor", 512, 0,
+                           {ref::embreeRayCasterFactory()}, {"objects=torus"});
+}
+BENCHMARK(BM_PrtFrame)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace gib::rt

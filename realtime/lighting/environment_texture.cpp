@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace gib::rt {
@@ -31,11 +32,16 @@ void EnvironmentTexture::bind() const {
   texture_.bind(gpu::kEnvironmentUnit);
 }
 
-scene::EnvironmentMap sceneEnvironment(const scene::Scene& scene) {
+scene::EnvironmentMap sceneEnvironment(const scene::Scene& scene, int constant_rows) {
   if (!scene.environment.empty()) return scene.environment;
   if (scene.sky_radiance == scene::Rgb(0.0f)) return {};
   const scene::Rgb& L = scene.sky_radiance;
-  return scene::makeEnvironmentMap(2, 1, {L.r, L.g, L.b, L.r, L.g, L.b}, "constant sky");
+  std::vector<float> texels;
+  texels.reserve(std::size_t(6 * constant_rows * constant_rows));
+  for (int t = 0; t < 2 * constant_rows * constant_rows; ++t)
+    texels.insert(texels.end(), {L.r, L.g, L.b});
+  return scene::makeEnvironmentMap(2 * constant_rows, constant_rows, std::move(texels),
+                                   "constant sky");
 }
 
 }  // namespace gib::rt

@@ -38,8 +38,9 @@ class EnvironmentTexture {
 };
 
 // What a ray leaving `scene` sees, as a map: its environment map, or for a scene with a constant
-// sky a 2 × 1 map of that radiance (a constant map is its texels' value in every direction);
-// empty when the scene has neither.
-scene::EnvironmentMap sceneEnvironment(const scene::Scene& scene);
+// sky a map of that radiance, `constant_rows` rows of twice as many columns (a constant map is
+// its texels' value in every direction; more texels serve a caller that divides the sphere by
+// them); empty when the scene has neither.
+scene::EnvironmentMap sceneEnvironment(const scene::Scene& scene, int constant_rows = 1);
 
 }  // namespace gib::rt

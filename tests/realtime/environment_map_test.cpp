@@ -6,6 +6,7 @@
 // surface tilted by β the irradiance E(β) = (2/3)·((π − β)·cos β + sin β); a perfect mirror shows
 // the map's texel in the reflected direction, and a glass of index 1 the texel straight through.
 // Also its bad parameters and statistics; every run checks the declared passes and outputs.
+#include "realtime/gpu_scene/glossy_exponents.h"
 #include "realtime/techniques/environment_map/environment_convolution.h"
 #include "realtime/techniques/environment_map/environment_map_technique.h"
 

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <set>
 
 namespace gib::rt {
 
@@ -87,17 +86,6 @@ DownsampledEnvironment downsampleEnvironment(const scene::EnvironmentMap& map, i
     }
   }
   return out;
-}
-
-std::vector<float> glossyExponents(const scene::Scene& scene) {
-  std::set<float> exponents;
-  for (const scene::Mesh& mesh : scene.meshes) {
-    const scene::Material& m = scene.materials[mesh.material];
-    if (!mesh.triangles.empty() && m.type == scene::MaterialType::kPhong &&
-        m.specular != scene::Rgb(0.0f))
-      exponents.insert(m.exponent);
-  }
-  return {exponents.begin(), exponents.end()};
 }
 
 EnvironmentConvolution::EnvironmentConvolution(const scene::EnvironmentMap& map, int source_height,

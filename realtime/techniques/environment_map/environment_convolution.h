@@ -31,10 +31,6 @@ struct DownsampledEnvironment {
 };
 DownsampledEnvironment downsampleEnvironment(const scene::EnvironmentMap& map, int height);
 
-// The distinct Phong exponents of the scene's glossy meshes (a Phong material with non-zero
-// specular reflectance on a mesh with triangles), in increasing order: one glossy map each.
-std::vector<float> glossyExponents(const scene::Scene& scene);
-
 class EnvironmentConvolution {
  public:
   // Downsamples `map` to `source_height` rows and sums the maps at `height` rows (2 × height

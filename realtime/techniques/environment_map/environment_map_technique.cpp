@@ -2,6 +2,7 @@
 
 #include "realtime/gl/pass_profiler.h"
 #include "realtime/gl/pipeline_state.h"
+#include "realtime/gpu_scene/glossy_exponents.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/render_target.h"
 #include "scene/path_expression.h"
@@ -19,15 +20,12 @@ namespace {
 constexpr const char* kEnvironmentShader =
     "realtime/techniques/environment_map/environment.frag.glsl";
 
-// The environment pass's defines: the map and the glossy layers' exponents (in exponent
-// notation, with enough digits to round-trip a float, so that the shader's equality test finds
-// the material's).
+// The environment pass's defines: the map and the glossy layers' exponents.
 std::string passDefines(const std::vector<float>& exponents) {
   std::string defines(kEnvironmentMapDefine);
   defines += fmt::format("#define GLOSSY_MAPS {}\n", exponents.size());
   if (!exponents.empty())
-    defines +=
-        fmt::format("#define GLOSSY_EXPONENTS float[]({:.9e})\n", fmt::join(exponents, ", "));
+    defines += fmt::format("#define GLOSSY_EXPONENTS {}\n", glslExponentArray(exponents));
   return defines;
 }
 

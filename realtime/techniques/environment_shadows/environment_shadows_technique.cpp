@@ -2,6 +2,7 @@
 
 #include "common/elapsed.h"
 #include "common/input_error.h"
+#include "realtime/gpu_scene/glossy_exponents.h"
 #include "realtime/gpu_scene/gpu_scene.h"
 #include "realtime/lighting/cell_reflectivity_shared.h"
 #include "realtime/lighting/environment_texture.h"
@@ -15,7 +16,6 @@
 #include <chrono>
 #include <limits>
 #include <memory>
-#include <set>
 #include <string>
 
 namespace gib::rt {
@@ -25,30 +25,6 @@ namespace {
 // A scene with a constant sky (the need admits one) is lit by a constant map of this many rows:
 // fine enough that every allowed cell count has texels to hold it.
 constexpr int kConstantSkyRows = 64;
-
-scene::EnvironmentMap lightingEnvironment(const scene::Scene& scene) {
-  if (!scene.environment.empty()) return scene.environment;
-  const scene::Rgb sky = scene.sky_radiance;
-  std::vector<float> texels;
-  texels.reserve(std::size_t(6 * kConstantSkyRows * kConstantSkyRows));
-  for (int t = 0; t < 2 * kConstantSkyRows * kConstantSkyRows; ++t)
-    texels.insert(texels.end(), {sky.x, sky.y, sky.z});
-  return scene::makeEnvironmentMap(2 * kConstantSkyRows, kConstantSkyRows, std::move(texels),
-                                   "constant sky");
-}
-
-// The distinct Phong exponents of the scene's glossy meshes, one table each (as environment_map
-// convolves one glossy map each).
-std::vector<float> phongExponents(const scene::Scene& scene) {
-  std::set<float> exponents;
-  for (const scene::Mesh& mesh : scene.meshes) {
-    const scene::Material& m = scene.materials[mesh.material];
-    if (!mesh.triangles.empty() && m.type == scene::MaterialType::kPhong &&
-        m.specular != scene::Rgb(0.0f))
-      exponents.insert(m.exponent);
-  }
-  return {exponents.begin(), exponents.end()};
-}
 
 // Each non-empty cell as a directional light at its centre carrying its power; with the
 // integrated reflectivity, the half-angle of the cap of its solid angle too.
@@ -76,7 +52,7 @@ EnvironmentShadowsTechnique::EnvironmentShadowsTechnique(const ParameterValues& 
 
 void EnvironmentShadowsTechnique::prepare(const GpuScene& scene, int width, int height) {
   scene_ = &scene;
-  map_ = lightingEnvironment(scene.scene());
+  map_ = sceneEnvironment(scene.scene(), kConstantSkyRows);
   // Step 1: the cells (§4.2.3's preprocessing), and their Delaunay mesh for Fig. 4.13's image.
   cells_ = buildEnvironmentCells(map_, cell_count_, relaxation_steps_);
   const auto delaunay_start = std::chrono::steady_clock::now();
@@ -91,7 +67,7 @@ void EnvironmentShadowsTechnique::prepare(const GpuScene& scene, int width, int 
 }
 
 void EnvironmentShadowsTechnique::prepareReflectivity(const scene::Scene& scene) {
-  const std::vector<float> exponents = phongExponents(scene);
+  const std::vector<float> exponents = glossyExponents(scene);
   if (exponents.size() > std::size_t(gpu::kMaxCellReflectivityExponents))
     throw InputError(fmt::format(
         "the scene's glossy meshes use {} distinct Phong exponents; environment_shadows' "
@@ -109,11 +85,9 @@ void EnvironmentShadowsTechnique::prepareReflectivity(const scene::Scene& scene)
   reflectivity_ms_ = millisecondsSince(start);
   std::string defines = "#define GIB_CELL_REFLECTIVITY\n";
   defines += fmt::format("#define CELL_REFLECTIVITY_LAYERS {}\n", exponents.size());
-  // Exponent notation with enough digits to round-trip a float: the shader's equality test finds
-  // the material's exponent.
   if (!exponents.empty())
-    defines += fmt::format("#define CELL_REFLECTIVITY_EXPONENTS float[]({:.9e})\n",
-                           fmt::join(exponents, ", "));
+    defines +=
+        fmt::format("#define CELL_REFLECTIVITY_EXPONENTS {}\n", glslExponentArray(exponents));
   surface_lighting_.lighting().setShadingDefines(defines);
 }
 
