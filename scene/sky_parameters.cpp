@@ -27,6 +27,10 @@ ParameterTable skyParameters(const SkyDefaults& defaults) {
       numericParameter("environment_intensity", ParameterType::kNumber, "1", 0, 1e6, "",
                        "scales the map's radiance (the sky's texels are taken in units of "
                        "20 kcd/m²)"),
+      choiceParameter("sun", "disc", {"disc", "none"},
+                      "the sky's sun: its disc's power in the texel that holds it, or none (the "
+                      "disc left out, the map's ground still lit by it: a smooth environment, as "
+                      "spherical harmonics and equal-power cells want)"),
   };
 }
 
@@ -39,7 +43,8 @@ EnvironmentMap makeSkyEnvironment(const ParameterValues& parameters, std::string
     sky.sun_azimuth_deg = float(parameters.number("sun_azimuth"));
     sky.turbidity = float(parameters.number("turbidity"));
     sky.height = parameters.integer("sky_resolution");
-    map = makePreethamSky(sky);
+    map = makePreethamSky(
+        sky, parameters.text("sun") == "disc" ? SunDisc::kIncluded : SunDisc::kOmitted);
     map.intensity = kSkyScale;
   } else {
     try {

@@ -26,7 +26,7 @@ struct SkyDefaults {
 };
 
 // environment, sun_elevation, sun_azimuth, turbidity, sky_resolution, environment_rotation,
-// environment_intensity, in that order.
+// environment_intensity, sun, in that order.
 ParameterTable skyParameters(const SkyDefaults& defaults);
 
 // The map those parameters describe: the Preetham sky scaled by kSkyScale, or the EXR (an

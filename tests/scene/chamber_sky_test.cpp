@@ -5,6 +5,7 @@
 // triangles and pass for a leak).
 #include "common/parameters.h"
 #include "scene/builtin_scenes.h"
+#include "scene/preetham_sky.h"
 #include "scene/sky_parameters.h"
 
 #include <gtest/gtest.h>
@@ -166,6 +167,41 @@ TEST(ChamberSky, TheFloorSeesASmallFractionOfTheSky) {
     // Without the sky the shell is closed: nothing escapes.
     EXPECT_EQ(skyView(closed, {0.0, 0.01, z}, 16).escaping, 0) << "z " << z;
   }
+}
+
+}  // namespace
+}  // namespace gib::scene
+
+namespace gib::scene {
+namespace {
+
+// `sun=none` (both scenes' sky parameters) leaves out exactly the sun's disc: the map loses the
+// disc's power, ∫L dω drops by L_sun·Ω_sun, and nothing else changes; the default keeps the disc
+// and the hash.
+TEST(SkyParameters, SunNoneLeavesOutTheDiscAlone) {
+  const ParameterValues with = parseParameters(outdoorParameters(), {}, "scene 'outdoor'");
+  const ParameterValues without =
+      parseParameters(outdoorParameters(), {"sun=none"}, "scene 'outdoor'");
+  EXPECT_EQ(hashScene(makeOutdoor(with)),
+            hashScene(makeOutdoor(parseParameters(outdoorParameters(), {"sun=disc"}, ""))));
+  const EnvironmentMap disc = makeSkyEnvironment(with, "outdoor");
+  const EnvironmentMap none = makeSkyEnvironment(without, "outdoor");
+  SkyParameters sky;
+  sky.sun_elevation_deg = float(with.number("sun_elevation"));
+  sky.turbidity = float(with.number("turbidity"));
+  const double sun_power =
+      double(luminance(sunRadiance(
+          sky.turbidity, std::numbers::pi / 2 - sky.sun_elevation_deg * std::numbers::pi / 180))) *
+      2 * std::numbers::pi * (1 - std::cos(kSunAngularRadiusDeg * std::numbers::pi / 180)) *
+      double(kSkyScale);
+  const double drop =
+      double(luminance(environmentIntegral(disc))) - double(luminance(environmentIntegral(none)));
+  EXPECT_NEAR(drop, sun_power, 1e-4 * sun_power);
+  int differing = 0;
+  for (int y = 0; y < disc.height; ++y)
+    for (int x = 0; x < disc.width; ++x) differing += disc.texel(x, y) != none.texel(x, y);
+  EXPECT_EQ(differing, 1);
+  EXPECT_NE(hashScene(makeOutdoor(with)), hashScene(makeOutdoor(without)));
 }
 
 }  // namespace
