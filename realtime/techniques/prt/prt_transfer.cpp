@@ -64,7 +64,10 @@ Transfer computeTransfer(const PrtMesh& mesh, const scene::Scene& scene,
   const int n = sh::shBasisCount(settings.bands);
   const std::size_t dimension = 3 * std::size_t(n);
   const std::size_t count = mesh.vertexCount();
-  const auto [rows, columns] = strataOf(settings.rays);
+  // Plain variables, not a structured binding: the lambda below captures them, which clang
+  // before 16 refuses for bindings.
+  const std::pair<int, int> strata = strataOf(settings.rays);
+  const int rows = strata.first, columns = strata.second;
   const float epsilon = caster.rayEpsilon();
   const double inverse_rays = 1.0 / settings.rays;
 
