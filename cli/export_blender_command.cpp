@@ -1,5 +1,6 @@
-// gibench export-blender --scene NAME [--scene-set key=value …] [--width W --height H] [--spp N]
-//                        [--seed S] --out SCENE.py
+// gibench export-blender --scene NAME [--scene-set key=value …] [--lens-radius R --focus-distance
+// D]
+//                        [--width W --height H] [--spp N] [--seed S] --out SCENE.py
 // Writes the scene as a Blender Python script that renders it with Cycles
 // (scene/blender_export.h); scripts/cross-check-cycles.sh compares that render with the reference.
 #include "cli/commands.h"
@@ -20,6 +21,7 @@ namespace {
 struct ExportBlenderOptions {
   std::string scene;
   std::vector<std::string> scene_set;
+  scene::LensSetting lens;  // as `gibench render --lens-radius --focus-distance`
   std::optional<int> width;
   std::optional<int> height;
   int spp = 64;  // as `gibench render`
@@ -29,7 +31,8 @@ struct ExportBlenderOptions {
 
 int runExportBlender(const ExportBlenderOptions& o) {
   image::checkOutputFile(o.out, ".py");
-  const scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
+  scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
+  scene::applyLens(scene.camera, o.lens, "--lens-radius", "--focus-distance");
   scene::BlenderExportSettings settings;
   settings.width = o.width.value_or(scene.default_width);
   settings.height = o.height.value_or(scene.default_height);
@@ -61,6 +64,10 @@ CommandRunner addExportBlenderCommand(CLI::App& app) {
       ->required();
   command->add_option("--scene-set", o->scene_set,
                       "scene parameter key=value (repeatable; see `gibench list scenes`)");
+  command->add_option("--lens-radius", o->lens.radius,
+                      "thin-lens radius in scene units, 0 for the pinhole (as `gibench render`)");
+  command->add_option("--focus-distance", o->lens.focus_distance,
+                      "distance in scene units to the plane in focus (as `gibench render`)");
   command->add_option("--width", o->width, "image width in pixels (default: the scene's)");
   command->add_option("--height", o->height, "image height in pixels (default: the scene's)");
   command->add_option("--spp", o->spp, "Cycles samples per pixel")->capture_default_str();

@@ -78,7 +78,7 @@ int renderReference(const RenderOptions& o, const CLI::App& app) {
   const scene::PathClass path_class = pathClassOf(o, app);
   const std::filesystem::path out(o.out);
   ref::checkOutputPath(out);
-  const scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
+  const scene::Scene scene = loadRenderScene(o);
 
   ref::RenderSettings settings;
   settings.width = o.width.value_or(scene.default_width);

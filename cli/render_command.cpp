@@ -1,5 +1,6 @@
 #include "cli/commands.h"
 #include "cli/render_options.h"
+#include "scene/builtin_scenes.h"
 
 #include <memory>
 
@@ -10,6 +11,12 @@ std::vector<std::string> givenOptions(const CLI::App& app, const std::vector<std
   for (const std::string& name : names)
     if (app.count(name) > 0) given.push_back(name);
   return given;
+}
+
+scene::Scene loadRenderScene(const RenderOptions& o) {
+  scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
+  scene::applyLens(scene.camera, o.lens, "--lens-radius", "--focus-distance");
+  return scene;
 }
 
 CommandRunner addRenderCommand(CLI::App& app) {
@@ -25,6 +32,13 @@ CommandRunner addRenderCommand(CLI::App& app) {
   render->add_option("--width", o->width, "image width in pixels (default: the scene's)");
   render->add_option("--height", o->height, "image height in pixels (default: the scene's)");
   render->add_option("--out", o->out, "output EXR (a PNG is written beside it)")->required();
+  render->add_option("--lens-radius", o->lens.radius,
+                     "thin-lens radius in scene units, 0 for the pinhole (default: the scene's, "
+                     "usually 0); the reference renders its depth of field, a technique keeps its "
+                     "pinhole and records the lens in its metadata");
+  render->add_option("--focus-distance", o->lens.focus_distance,
+                     "distance in scene units along the view to the plane in focus (default: the "
+                     "scene's, else look_at's distance)");
 
   const char* kReference = "Reference path tracer";
   render->add_option("--spp", o->spp, "samples per pixel")

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scene/obscurance.h"
+#include "scene/scene.h"
 
 #include <CLI/CLI.hpp>
 
@@ -19,6 +20,9 @@ struct RenderOptions {
   std::optional<int> height;
   std::vector<std::string> scene_set;
   std::string out;
+  // Both: the thin lens over the scene's camera (scene::applyLens). Techniques record it in their
+  // metadata and keep their pinhole GL camera.
+  scene::LensSetting lens;
   // Reference only.
   int spp = 64;
   std::uint64_t seed = 0;
@@ -49,6 +53,9 @@ struct RenderOptions {
 
 // Options given on the command line (not defaulted) among `names`, e.g. {"--spp", "--seed"}.
 std::vector<std::string> givenOptions(const CLI::App& app, const std::vector<std::string>& names);
+
+// The scene of --scene and --scene-set with the lens of --lens-radius and --focus-distance.
+scene::Scene loadRenderScene(const RenderOptions& options);
 
 int renderReference(const RenderOptions& options, const CLI::App& app);
 int renderTechnique(const RenderOptions& options, const CLI::App& app);

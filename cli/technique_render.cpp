@@ -40,7 +40,7 @@ int renderTechnique(const RenderOptions& o, const CLI::App& app) {
   const std::filesystem::path out(o.out);
   ref::checkOutputPath(out);
   if (!o.timings_json.empty()) image::checkOutputFile(o.timings_json, ".json");
-  const scene::Scene scene = scene::loadScene(o.scene, o.scene_set);
+  const scene::Scene scene = loadRenderScene(o);
 
   rt::TechniqueRunSettings settings;
   settings.width = o.width.value_or(scene.default_width);

@@ -57,6 +57,10 @@ class PathSampler {
 
   // The sample's position inside its pixel.
   glm::vec2 pixelPosition() const { return point2D(0); }
+  // The sample's point on a thin lens (scene::cameraRay). A dimension past every vertex's rather
+  // than after the pixel's, so that the vertices keep their dimensions and a pinhole render (which
+  // never draws it) its pixels, bit for bit.
+  glm::vec2 lensPosition() const { return point2D(kLensDimension); }
 
   // Selects the dimensions of scattering vertex `vertex` (0: the first the camera ray reaches).
   void startVertex(int vertex) {
@@ -119,6 +123,9 @@ class PathSampler {
         firstCoordinate(j, hash),
         fixedToUnitFloat(reverseBits(scrambleReversed(kSobolSecondDimensionReversed(j), y_seed)))};
   }
+
+  // Beyond the dimensions of any path: vertex v's start at 1 + v · kCount.
+  static constexpr std::uint32_t kLensDimension = 0xffffffffu;
 
   std::uint64_t key_;  // of (seed, pixel, replica)
   std::uint32_t index_;

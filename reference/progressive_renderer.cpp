@@ -79,12 +79,16 @@ class CameraBatch {
       // dimensions go unused, so the lighting's dimensions are those of the box filter's samples.
       const glm::vec2 position =
           glm::vec2(x, y) + (centre ? glm::vec2(0.5f) : samplers_.back().pixelPosition());
-      rays_.push_back(
-          {camera.origin, scene::cameraRayDirection(camera, settings.width, settings.height,
-                                                    position.x, position.y)});
+      // A thin lens draws its point for every sample, at the pixel's centre too: depth of field
+      // is the lens's spread, not anti-aliasing.
+      const glm::vec2 lens =
+          camera.lens_radius > 0 ? samplers_.back().lensPosition() : glm::vec2(0.0f);
+      const scene::CameraRay ray =
+          scene::cameraRay(camera, settings.width, settings.height, position.x, position.y, lens);
+      rays_.push_back({ray.origin, ray.direction});
     }
     hits_.resize(rays_.size());
-    if (centre) {
+    if (centre && camera.lens_radius == 0) {
       // One ray, the same for every sample: traced once (a single ray's hit is bit-identical to
       // a batch's, tested), and its hit shared.
       hits_.front() = tracer.embree().intersect(rays_.front().origin, rays_.front().direction);
@@ -226,6 +230,13 @@ RenderResult renderReference(const scene::Scene& scene, const RenderSettings& se
   const auto start = std::chrono::steady_clock::now();
 
   const bool light_paths = tracesLightPaths(scene, settings);
+  // The light tracer splats through a pinhole (LightTracer); a lens would need its own importance.
+  if (light_paths && scene.camera.lens_radius > 0)
+    throw InputError(fmt::format(
+        "scene '{}' has mirrors or glass, whose caustics the reference traces from the lights "
+        "through a pinhole camera only; give lens radius 0, or --light-paths off to trace camera "
+        "paths alone",
+        scene.name));
   // An obscurance has no path class: the tracer lends it its BVH and triangles only.
   PathTracer tracer(scene, settings.obscurance ? PathClass{} : settings.path_class, light_paths,
                     settings.environment_occlusion);

@@ -53,6 +53,10 @@ struct ReferenceSpec {
   // False: the environment's light reaches diffuse and glossy surfaces unblocked
   // (RenderSettings::environment_occlusion). A reference with occlusion keeps its key.
   bool environment_occlusion = true;
+  // The thin lens given over the scene's camera (scene::applyLens) by a suite or the command
+  // line, so that the entry can be rendered again (store verification). The key needs no field of
+  // its own: the scene's hash includes a lens of radius > 0, and a pinhole keeps its key.
+  scene::LensSetting lens;
 };
 
 // What a stored reference is of, in results and `store list`: its path class in Heckbert's

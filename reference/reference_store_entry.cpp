@@ -49,6 +49,12 @@ StoreEntry entryFromJson(const ordered_json& j) {
   e.spec.pixel_sampling = parsePixelSampling(spec.value("pixel_sampling", std::string("area")));
   // Recorded without the environment's occlusion only; an entry without it has it.
   e.spec.environment_occlusion = spec.value("environment_occlusion", true);
+  // Recorded when a lens was given over the scene's camera; an entry without one took the scene's.
+  if (const auto it = spec.find("lens"); it != spec.end()) {
+    if (it->contains("radius")) e.spec.lens.radius = it->at("radius").get<double>();
+    if (it->contains("focus_distance"))
+      e.spec.lens.focus_distance = it->at("focus_distance").get<double>();
+  }
   // Recorded for an obscurance reference only; an entry without it is of radiance.
   if (const auto it = spec.find("obscurance"); it != spec.end()) {
     scene::ObscuranceDefinition obscurance;
@@ -91,6 +97,8 @@ ordered_json entryToJson(const StoreEntry& e) {
                     {"reference_exr_hash", e.exr_hash}};
   if (!e.spec.path_class.expression.empty()) j["spec"]["paths"] = e.spec.path_class.expression;
   if (!e.spec.environment_occlusion) j["spec"]["environment_occlusion"] = false;
+  if (e.spec.lens.radius) j["spec"]["lens"]["radius"] = *e.spec.lens.radius;
+  if (e.spec.lens.focus_distance) j["spec"]["lens"]["focus_distance"] = *e.spec.lens.focus_distance;
   if (e.spec.obscurance)
     j["spec"]["obscurance"] = {
         {"falloff", std::string(scene::obscuranceFalloffName(e.spec.obscurance->falloff))},

@@ -132,11 +132,17 @@ std::string cameraEntry(const Scene& scene, const BlenderExportSettings& s) {
       farthest = std::max(farthest, glm::length(p - frame.origin));
   const float clip_end = farthest > 0 ? 2 * farthest : 1.0f;
   const float clip_start = std::max(1e-6f, 1e-6f * clip_end);
+  // The thin lens only when there is one, so that a pinhole's export stays as it was.
+  const std::string lens =
+      frame.lens_radius > 0
+          ? fmt::format(",\n               \"lens_radius\": {}, \"focus_distance\": {}",
+                        number(frame.lens_radius), number(frame.focus_distance))
+          : "";
   return fmt::format(
       "    \"camera\": {{\"position\": {}, \"forward\": {}, \"right\": {}, \"up\": {},\n"
-      "               \"vertical_fov_deg\": {}, \"clip_start\": {}, \"clip_end\": {}}},\n",
+      "               \"vertical_fov_deg\": {}, \"clip_start\": {}, \"clip_end\": {}{}}},\n",
       vec(frame.origin), vec(frame.forward), vec(frame.right), vec(frame.up),
-      number(scene.camera.vertical_fov_deg), number(clip_start), number(clip_end));
+      number(scene.camera.vertical_fov_deg), number(clip_start), number(clip_end), lens);
 }
 
 std::string spotEntries(const Scene& scene, std::vector<std::string>& warnings) {

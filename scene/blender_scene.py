@@ -249,6 +249,14 @@ def make_camera(scene, spec):
     camera.shift_x = camera.shift_y = 0.0
     camera.clip_start = spec["clip_start"]
     camera.clip_end = spec["clip_end"]
+    if spec.get("lens_radius", 0.0) > 0.0:
+        # GI Bench's thin lens: Cycles samples a disc of radius lens·10⁻³ / (2·f-stop) scene units
+        # (lens: the focal length in mm, set above by angle_y), focused on the plane at
+        # focus_distance along the view, as GI Bench's is.
+        camera.dof.use_dof = True
+        camera.dof.focus_distance = spec["focus_distance"]
+        camera.dof.aperture_fstop = camera.lens * 1e-3 / (2.0 * spec["lens_radius"])
+        camera.dof.aperture_blades = 0  # a disc, not a polygon
     obj = bpy.data.objects.new("camera", camera)
     # A Blender camera looks down its −Z axis with +Y up the image and +X to the right.
     p, r, u, f = spec["position"], spec["right"], spec["up"], spec["forward"]

@@ -2,6 +2,7 @@
 
 #include "gib/version.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 namespace gib::scene {
@@ -31,6 +32,13 @@ std::map<std::string, std::string> outputMetadata(const Scene& scene, std::strin
     m["gibench/max_bounces"] = unlimited ? "unlimited" : std::to_string(path_class.max_bounces);
   }
   m["gibench/path_class"] = describePathClass(path_class);
+  // The thin lens, when there is one (a pinhole image's metadata stays as it was). A technique's
+  // image records it too: its GL camera is a pinhole, and these say which lens it is measured
+  // against.
+  if (scene.camera.lens_radius > 0) {
+    m["gibench/lens_radius"] = fmt::format("{}", scene.camera.lens_radius);
+    m["gibench/focus_distance"] = fmt::format("{}", focusDistance(scene.camera));
+  }
   return m;
 }
 

@@ -140,9 +140,44 @@ void validateCamera(const Camera& c) {
           "camera up is parallel to the viewing direction; choose another up vector");
   require(c.vertical_fov_deg > 0 && c.vertical_fov_deg < 180,
           fmt::format("camera vertical_fov_deg must be in (0, 180), got {}", c.vertical_fov_deg));
+  checkLensRadius(c.lens_radius, "camera lens_radius");
+  // 0 stands for look_at's distance (Camera::focus_distance); anything else must be a distance.
+  if (c.focus_distance != 0) checkFocusDistance(c.focus_distance, "camera focus_distance");
 }
 
 }  // namespace
+
+float focusDistance(const Camera& camera) {
+  if (camera.focus_distance > 0) return camera.focus_distance;
+  return glm::length(camera.look_at - camera.position);
+}
+
+void checkLensRadius(double radius, std::string_view option) {
+  if (!(std::isfinite(radius) && radius >= 0))
+    throw InputError(fmt::format(
+        "{} {} is not a lens radius; give a finite radius >= 0 in scene units (0: the pinhole)",
+        option, radius));
+}
+
+void checkFocusDistance(double distance, std::string_view option) {
+  if (!(std::isfinite(distance) && distance > 0))
+    throw InputError(
+        fmt::format("{} {} is not a distance; give the distance in scene units (> 0) from "
+                    "the camera to the plane in focus",
+                    option, distance));
+}
+
+void applyLens(Camera& camera, const LensSetting& lens, std::string_view radius_option,
+               std::string_view focus_option) {
+  if (lens.radius) {
+    checkLensRadius(*lens.radius, radius_option);
+    camera.lens_radius = static_cast<float>(*lens.radius);
+  }
+  if (lens.focus_distance) {
+    checkFocusDistance(*lens.focus_distance, focus_option);
+    camera.focus_distance = static_cast<float>(*lens.focus_distance);
+  }
+}
 
 void validateScene(const Scene& scene) {
   for (const Material& m : scene.materials) validateMaterial(m);
@@ -258,6 +293,13 @@ std::string hashScene(const Scene& scene) {
   addVec(scene.camera.look_at);
   addVec(scene.camera.up);
   h.addFloat(scene.camera.vertical_fov_deg);
+  // The lens only when there is one (a tagged section: pinhole cameras hash as before), with the
+  // focus distance in effect, so that an explicit look_at distance hashes as the default does.
+  if (scene.camera.lens_radius > 0) {
+    h.addString("thin lens");
+    h.addFloat(scene.camera.lens_radius);
+    h.addFloat(focusDistance(scene.camera));
+  }
   return h.hexDigest();
 }
 

@@ -11,7 +11,9 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -132,7 +134,34 @@ struct Camera {
   glm::vec3 look_at{0.0f, 0.0f, -1.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float vertical_fov_deg = 45.0f;
+  // A thin lens (book §11.4), the reference's ground truth for depth of field: camera rays start
+  // on a disc of this radius (scene units) about `position`, across the view, and meet where the
+  // pinhole's ray through the same image point meets the plane in focus. 0: the pinhole.
+  float lens_radius = 0.0f;
+  // Distance (scene units) along the view direction from `position` to the plane in focus; 0: the
+  // plane through look_at (focusDistance). Only a lens (lens_radius > 0) reads it.
+  float focus_distance = 0.0f;
 };
+
+// The distance of the plane in focus: focus_distance, or look_at's distance along the view when
+// it is 0.
+float focusDistance(const Camera& camera);
+
+// Throws gib::InputError unless `radius` is a finite lens radius >= 0 / `distance` a finite
+// focus distance > 0, naming `option` (the command-line option, scene-file or suite key).
+void checkLensRadius(double radius, std::string_view option);
+void checkFocusDistance(double distance, std::string_view option);
+
+// A lens chosen outside the scene (`gibench render --lens-radius --focus-distance`, a suite's
+// `lens`), over the scene's own: each value given replaces the camera's, after the checks above
+// (naming the two options).
+struct LensSetting {
+  std::optional<double> radius;
+  std::optional<double> focus_distance;
+  bool operator==(const LensSetting&) const = default;
+};
+void applyLens(Camera& camera, const LensSetting& lens, std::string_view radius_option,
+               std::string_view focus_option);
 
 struct Scene {
   std::string name;

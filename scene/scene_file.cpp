@@ -33,13 +33,33 @@ const toml::table& requireTable(const ErrorReporter& errors, const toml::node& n
   return requireTomlTable(errors, node, name, fix);
 }
 
+// The thin lens of [camera]: lens_radius (default 0, the pinhole) and focus_distance (default
+// look_at's distance, Camera::focus_distance).
+void readLens(const TableReader& t, Camera& camera) {
+  auto read = [&](std::string_view key, void (*check)(double, std::string_view)) {
+    const toml::node* node = t.find(key);
+    if (!node) return 0.0f;
+    const double value = t.number(*node, key);
+    try {
+      check(value, fmt::format("camera.{}", key));
+    } catch (const InputError& e) {
+      t.errors().failWith(node->source(), e.what());
+    }
+    return static_cast<float>(value);
+  };
+  camera.lens_radius = read("lens_radius", checkLensRadius);
+  camera.focus_distance = read("focus_distance", checkFocusDistance);
+}
+
 Camera readCamera(const TableReader& root) {
   const toml::node* node = root.find("camera");
   if (!node)
     root.errors().fail(root.table(), "missing table [camera]",
                        "add [camera] with position, look_at and vertical_fov_deg");
-  const TableReader t(root.errors(), requireTable(root.errors(), *node, "camera", "write [camera]"),
-                      "camera", "[camera]", {"position", "look_at", "up", "vertical_fov_deg"});
+  const TableReader t(
+      root.errors(), requireTable(root.errors(), *node, "camera", "write [camera]"), "camera",
+      "[camera]",
+      {"position", "look_at", "up", "vertical_fov_deg", "lens_radius", "focus_distance"});
   Camera camera;
   camera.position = t.vec3(t.require("position", "[x, y, z]"), "position");
   const toml::node& look_at = t.require("look_at", "[x, y, z]");
@@ -53,6 +73,7 @@ Camera readCamera(const TableReader& root) {
         fov,
         fmt::format("camera.vertical_fov_deg must be in (0, 180), got {}", camera.vertical_fov_deg),
         "give the full vertical field of view in degrees, e.g. 45.0");
+  readLens(t, camera);
   const glm::vec3 forward = camera.look_at - camera.position;
   if (glm::length(forward) == 0)
     t.errors().fail(look_at, "camera.look_at equals camera.position",

@@ -8,6 +8,7 @@
 #   scripts/cross-check-cycles.sh SCENE [--scene-set key=value ...] [--width W] [--height H]
 #                                 [--spp N] [--seed S] [--truth-spp N] [--replicas K] [--out DIR]
 #                                 [--cycles-no-light-sampling] [--own-truth] [--light-paths MODE]
+#                                 [--lens-radius R --focus-distance D]
 #
 # The truth is a Cycles render when the scene maps exactly onto Cycles; when it does not (the
 # exporter's warnings say what differs: Phong lobes, a spot fall-off, a medium, the caustics of a
@@ -18,7 +19,8 @@
 # (which the means and the worst block show). --replicas K is passed to `gibench render` (its
 # default: 4 replicas, the error bars' cost), and so is --light-paths auto|off (its default: auto,
 # light tracing of the caustics' paths where the scene has mirrors or glass; off: camera paths
-# only, a path tracer as Cycles is).
+# only, a path tracer as Cycles is). --lens-radius R --focus-distance D give both renderers the
+# thin lens (docs/rendering.md, "Depth of field: the thin lens"; Cycles' depth of field).
 #
 # --cycles-no-light-sampling renders both Cycles images with emissive meshes left to BSDF
 # sampling: noisier, but free of the slight darkening of Cycles' light sampling at grazing angles
@@ -41,6 +43,7 @@ fail() {
 usage="usage: scripts/cross-check-cycles.sh SCENE [--scene-set key=value ...] [--width W]"
 usage+=" [--height H] [--spp N] [--seed S] [--truth-spp N] [--replicas K] [--out DIR]"
 usage+=" [--cycles-no-light-sampling] [--own-truth] [--light-paths MODE]"
+usage+=" [--lens-radius R --focus-distance D]"
 scene=""
 scene_set=()
 width=256
@@ -64,7 +67,7 @@ while [ $# -gt 0 ]; do
       shift
       ;;
     --scene-set | --width | --height | --spp | --seed | --truth-spp | --replicas | --out | \
-      --light-paths)
+      --light-paths | --lens-radius | --focus-distance)
       [ $# -ge 2 ] || fail "$1 needs a value; $usage"
       case "$1" in
         --scene-set) scene_set+=(--scene-set "$2") ;;
@@ -76,6 +79,8 @@ while [ $# -gt 0 ]; do
         --replicas) replicas="$2" ;;
         --out) out="$2" ;;
         --light-paths) gibench_options+=(--light-paths "$2") ;;
+        # The thin lens: the scene's camera for both renderers, so it goes with the scene.
+        --lens-radius | --focus-distance) scene_set+=("$1" "$2") ;;
       esac
       shift 2
       ;;

@@ -64,7 +64,9 @@ struct JobReference {
 JobReference classReference(const PreparedJob& p) {
   return {referenceClass(p), false};
 }
-JobReference fullReference() { return {scene::PathClass{}, true}; }
+JobReference fullReference() {
+  return {scene::PathClass{}, true};
+}
 
 // The spec of the job's reference, or of its obscurance (then the class is every path, which
 // keeps the key canonical: the renderer ignores it).
@@ -81,6 +83,7 @@ ref::ReferenceSpec referenceSpec(const PreparedJob& p, const JobReference& of) {
   spec.pixel_sampling = pixelSampling(p);
   spec.obscurance = p.obscurance;
   spec.environment_occlusion = of.full || p.job->settings.reference.environment_occlusion;
+  spec.lens = p.job->settings.lens;
   return spec;
 }
 
@@ -348,6 +351,7 @@ PreparedJob prepareJob(const Job& job) {
   p.job = &job;
   try {
     p.scene = scene::loadScene(job.scene.nameOrPath(), assignmentStrings(job.scene_parameters));
+    scene::applyLens(p.scene.camera, job.settings.lens, "lens.radius", "lens.focus_distance");
     p.width = job.settings.width.value_or(p.scene.default_width);
     p.height = job.settings.height.value_or(p.scene.default_height);
     if (!job.isReference()) {

@@ -39,7 +39,8 @@ VerifyResult verifyStoreEntry(const ref::ReferenceStore& store, const ref::Store
   };
 
   // Step 1: the scene must still be the one that was rendered, or nothing can be concluded.
-  const scene::Scene scene = scene::loadScene(entry.spec.scene, entry.spec.scene_parameters);
+  scene::Scene scene = scene::loadScene(entry.spec.scene, entry.spec.scene_parameters);
+  scene::applyLens(scene.camera, entry.spec.lens, "lens.radius", "lens.focus_distance");
   if (const std::string hash = scene::hashScene(scene); hash != entry.scene_hash) {
     result.problem =
         fmt::format("scene changed since the reference was stored (hash {} then, {} now)",

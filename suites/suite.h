@@ -5,6 +5,7 @@
 #pragma once
 
 #include "results/results.h"
+#include "scene/scene.h"
 
 #include <filesystem>
 #include <optional>
@@ -69,6 +70,9 @@ struct RunSettings {
   int repeats = 1;
   std::vector<std::string> metrics;  // metric registry names, catalogue order
   ReferenceSettings reference;
+  // The thin lens over the scene's camera (`lens = { radius, focus_distance }`, scene::applyLens):
+  // the reference renders its depth of field; a technique keeps its pinhole, measured against it.
+  scene::LensSetting lens;
   // Optional series, strictly increasing: spp of a reference case, iterations of an iterative
   // technique.
   std::vector<int> checkpoints;

@@ -43,8 +43,8 @@ constexpr long long kMaxIterations = 100000;
 // Whole runs of one technique job; more belong in a benchmark than in a suite.
 constexpr long long kMaxRepeats = 100;
 
-const std::vector<std::string> kSettingKeys = {"width",  "height",  "metrics",  "frames",
-                                               "warmup", "repeats", "reference"};
+const std::vector<std::string> kSettingKeys = {"width",  "height",  "metrics",   "frames",
+                                               "warmup", "repeats", "reference", "lens"};
 const std::vector<std::string> kReferenceKeys = {
     "spp",   "seed",           "min_bounces",          "max_bounces",
     "paths", "pixel_sampling", "environment_occlusion"};
@@ -161,6 +161,30 @@ void readReference(const TomlTableReader& parent, const toml::node& node, Settin
     s.run.reference.environment_occlusion = t.boolean(*n, "environment_occlusion");
 }
 
+// `lens = { radius = R, focus_distance = D }`: the thin lens over the scene's camera.
+void readLens(const TomlTableReader& parent, const toml::node& node, Settings& s) {
+  const std::string name = parent.path("lens");
+  const TomlTableReader t(
+      parent.errors(),
+      requireTomlTable(parent.errors(), node, name,
+                       "write lens = { radius = 0.05, focus_distance = 4.0 } (scene units)"),
+      name, fmt::format("[{}]", name), {"radius", "focus_distance"});
+  auto read = [&](std::string_view key, void (*check)(double, std::string_view),
+                  std::optional<double>& into) {
+    const toml::node* n = t.find(key);
+    if (!n) return;
+    const double value = t.number(*n, key);
+    try {
+      check(value, t.path(key));
+    } catch (const InputError& e) {
+      t.errors().failWith(n->source(), e.what());
+    }
+    into = value;
+  };
+  read("radius", scene::checkLensRadius, s.run.lens.radius);
+  read("focus_distance", scene::checkFocusDistance, s.run.lens.focus_distance);
+}
+
 // Reads the keys of kSettingKeys present in `t` over `s`.
 void readSettings(const TomlTableReader& t, Settings& s) {
   if (const toml::node* n = t.find("width")) {
@@ -179,6 +203,7 @@ void readSettings(const TomlTableReader& t, Settings& s) {
   if (const toml::node* n = t.find("repeats"))
     s.run.repeats = static_cast<int>(t.integer(*n, "repeats", 1, kMaxRepeats, "3"));
   if (const toml::node* n = t.find("reference")) readReference(t, *n, s);
+  if (const toml::node* n = t.find("lens")) readLens(t, *n, s);
 }
 
 // Checks what only the merged settings of a case can tell.

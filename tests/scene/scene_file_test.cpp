@@ -99,6 +99,26 @@ TEST_F(SceneFileTest, FlipNormalsReversesTheWinding) {
   }
 }
 
+// [camera] lens_radius and focus_distance: the thin lens (default: the pinhole, focused at
+// look_at's distance); a negative radius or a focus distance <= 0 is refused where it is written.
+TEST_F(SceneFileTest, CameraLens) {
+  EXPECT_EQ(loadSceneFile(write(kScene)).camera.lens_radius, 0.0f);
+  const std::string lens = replaced(kScene, "vertical_fov_deg = 39.3077",
+                                    "vertical_fov_deg = 39.3077\nlens_radius = 20.0\n"
+                                    "focus_distance = 1000.0");
+  const Scene scene = loadSceneFile(write(lens));
+  EXPECT_EQ(scene.camera.lens_radius, 20.0f);
+  EXPECT_EQ(scene.camera.focus_distance, 1000.0f);
+  EXPECT_THAT(expectErrorAt(replaced(kScene, "vertical_fov_deg = 39.3077",
+                                     "vertical_fov_deg = 39.3077\nlens_radius = -1.0"),
+                            "lens_radius = -1.0"),
+              HasSubstr("camera.lens_radius -1 is not a lens radius"));
+  EXPECT_THAT(expectErrorAt(replaced(kScene, "vertical_fov_deg = 39.3077",
+                                     "vertical_fov_deg = 39.3077\nfocus_distance = -3.0"),
+                            "focus_distance = -3.0"),
+              HasSubstr("camera.focus_distance -3 is not a distance"));
+}
+
 TEST_F(SceneFileTest, TomlSyntaxErrorGivesItsPosition) {
   const std::string text = replaced(kScene, "height = 240", "height = = 240");
   const std::string message = expectErrorAt(text, "height = = 240");

@@ -54,6 +54,28 @@ TEST(JobReferences, EnvironmentWithoutOcclusionKeepsAnOccludedFullReference) {
   EXPECT_NE(specs[0].environment_occlusion, specs[1].environment_occlusion);
 }
 
+// A suite's lens reaches the job's scene (its hash, so the store key) and the references' specs
+// (entry.json, so that store verification renders the same lens); a pinhole job keeps its key.
+TEST(JobReferences, TheLensReachesTheSceneAndTheSpecs) {
+  const Job pinhole_job = directJob();
+  Job job = pinhole_job;
+  job.settings.lens.radius = 10.0;
+  job.settings.lens.focus_distance = 900.0;
+  const PreparedJob pinhole = prepareJob(pinhole_job);
+  const PreparedJob lens = prepareJob(job);
+  EXPECT_EQ(lens.scene.camera.lens_radius, 10.0f);
+  EXPECT_EQ(lens.scene.camera.focus_distance, 900.0f);
+  EXPECT_NE(lens.scene_hash, pinhole.scene_hash);
+  const std::vector<ref::ReferenceSpec> specs = jobReferences(lens);
+  ASSERT_EQ(specs.size(), 2u);
+  for (const ref::ReferenceSpec& spec : specs) EXPECT_EQ(spec.lens, job.settings.lens);
+  EXPECT_NE(ref::referenceKey(lens.scene, specs[0]),
+            ref::referenceKey(pinhole.scene, jobReferences(pinhole)[0]));
+  Job zero = pinhole_job;
+  zero.settings.lens.radius = 0.0;
+  EXPECT_EQ(prepareJob(zero).scene_hash, pinhole.scene_hash);
+}
+
 TEST(JobReferences, ObscuranceJobHasItsObscuranceReferenceAlone) {
   const Job job = directJob();
   PreparedJob p = prepareJob(job);

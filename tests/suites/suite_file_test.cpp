@@ -226,6 +226,44 @@ reference = { environment_occlusion = "off" }
               HasSubstr("environment_occlusion"));
 }
 
+// `lens = { radius, focus_distance }` in [defaults] or a case: the thin lens over the scene's
+// camera, each key over the defaults'; a negative radius or a focus distance <= 0 is refused
+// where it is written.
+TEST_F(SuiteFileTest, LensInTheDefaultsAndACase) {
+  const Suite suite = load(R"(name = "lens"
+[defaults]
+lens = { radius = 0.05, focus_distance = 4.0 }
+[[case]]
+scene = "cornell"
+technique = "direct"
+[[case]]
+name = "closer"
+scene = "cornell"
+technique = "direct"
+lens = { focus_distance = 2.0 }
+)");
+  EXPECT_EQ(suite.cases[0].settings.lens.radius, 0.05);
+  EXPECT_EQ(suite.cases[0].settings.lens.focus_distance, 4.0);
+  EXPECT_EQ(suite.cases[1].settings.lens.radius, 0.05);
+  EXPECT_EQ(suite.cases[1].settings.lens.focus_distance, 2.0);
+  EXPECT_THAT(expectErrorAt(R"(name = "bad"
+[[case]]
+scene = "cornell"
+technique = "direct"
+lens = { radius = -1.0 }
+)",
+                            "lens ="),
+              HasSubstr("lens.radius -1 is not a lens radius"));
+  EXPECT_THAT(expectErrorAt(R"(name = "bad"
+[[case]]
+scene = "cornell"
+technique = "direct"
+lens = { radius = 1.0, focus_distance = 0.0 }
+)",
+                            "lens ="),
+              HasSubstr("focus_distance 0 is not a distance"));
+}
+
 TEST_F(SuiteFileTest, RelativeScenePathsStartAtTheSuiteFilesFolder) {
   writeFile(dir_ / "scenes" / "room.toml", "# not read while parsing the suite\n");
   writeFile(dir_ / "sub" / "suite.toml", R"(name = "files"
