@@ -97,6 +97,30 @@ TEST(ReferenceStore, EntryRecordsWhatWasRenderedAndHow) {
   EXPECT_GT(e.render_seconds, 0);
 }
 
+// A lens given over the scene's camera is recorded in entry.json (for verification to render it
+// again) and keyed through the scene's hash; an entry without one reads back as the scene's own.
+TEST(ReferenceStore, EntryRecordsTheLensGivenOverTheScene) {
+  TempDir dir;
+  ReferenceSpec spec = smallReferenceSpec("cornell", 8, 2);
+  spec.lens.radius = 20.0;
+  spec.lens.focus_distance = 1000.0;
+  const StoredReference stored = obtainReference(dir.path(), spec);
+  const std::optional<StoredReference> found = ReferenceStore(dir.path()).find(stored.entry.key);
+  ASSERT_TRUE(found);
+  EXPECT_EQ(found->entry.spec.lens, spec.lens);
+  scene::Scene lens = scene::loadScene("cornell");
+  lens.camera.lens_radius = 20.0f;
+  lens.camera.focus_distance = 1000.0f;
+  EXPECT_EQ(found->entry.scene_hash, scene::hashScene(lens));
+  EXPECT_NE(found->entry.key,
+            obtainReference(dir.path(), smallReferenceSpec("cornell", 8, 2)).entry.key);
+  const std::optional<StoredReference> pinhole =
+      ReferenceStore(dir.path())
+          .find(referenceKey(scene::loadScene("cornell"), smallReferenceSpec("cornell", 8, 2)));
+  ASSERT_TRUE(pinhole);
+  EXPECT_EQ(pinhole->entry.spec.lens, scene::LensSetting{});
+}
+
 TEST(ReferenceStore, KeyChangesWithEverySettingAndIsStable) {
   const scene::Scene cornell = scene::loadScene("cornell");
   const ReferenceSpec base = smallReferenceSpec();

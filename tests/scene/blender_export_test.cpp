@@ -78,6 +78,20 @@ TEST(BlenderExport, CornellBoxMapsExactlyWithItsCameraMaterialsAndSettings) {
   EXPECT_THAT(py, HasSubstr("\"triangles\": [0, 1, 2, 0, 2, 3]"));
 }
 
+// The thin lens goes to Cycles' depth of field (an f-stop from the focal length, a round
+// aperture, the same focus distance; scene/blender_scene.py); a pinhole's camera has no lens keys,
+// so its export is as it was. The focus distance in effect is written: look_at's by default.
+TEST(BlenderExport, TheThinLensIsExportedOnlyWhenThereIsOne) {
+  Scene scene = loadScene("cornell", {"blocks=false"});
+  EXPECT_THAT(exportBlenderScript(scene, smallSettings()).script,
+              Not(HasSubstr("\"lens_radius\": ")));
+  scene.camera.lens_radius = 25;
+  const std::string py = exportBlenderScript(scene, smallSettings()).script;
+  EXPECT_THAT(py, HasSubstr("\"lens_radius\": 25, \"focus_distance\": 800}"));
+  EXPECT_THAT(py, HasSubstr("camera.dof.aperture_fstop = camera.lens * 1e-3 / (2.0 * "
+                            "spec[\"lens_radius\"])"));
+}
+
 TEST(BlenderExport, LampsKeepGiBenchsUnits) {
   Scene scene = loadScene("cornell", {"blocks=false"});
   SpotLight spot;

@@ -21,7 +21,10 @@ ref::ReferenceSpec smallReferenceSpec(const std::string& scene, int size, std::u
 ref::StoredReference obtainReference(const std::filesystem::path& root,
                                      const ref::ReferenceSpec& spec) {
   ref::ReferenceStore store(root);
-  return store.obtain(scene::loadScene(spec.scene, spec.scene_parameters), spec);
+  // The scene the spec describes: its lens over the scene's camera, as store verification has it.
+  scene::Scene scene = scene::loadScene(spec.scene, spec.scene_parameters);
+  scene::applyLens(scene.camera, spec.lens, "lens.radius", "lens.focus_distance");
+  return store.obtain(scene, spec);
 }
 
 void scaleStoredMean(const ref::StoreEntry& entry, float factor) {
