@@ -31,6 +31,18 @@ fail() {
   exit 1
 }
 
+# check_means SUMMARY TOLERANCE LABEL: each channel's relative difference of the means on the
+# script's 'mean R|G|B' lines lies within ±TOLERANCE percent.
+check_means() {
+  local channel difference
+  for channel in R G B; do
+    difference=$(sed -n "s/^mean $channel .* \([-+][0-9.]*\)%$/\1/p" "$1")
+    [ -n "$difference" ] || fail "$3: no relative difference on the 'mean $channel' line"
+    awk -v d="$difference" -v t="$2" 'BEGIN { exit !(d <= t && d >= -t) }' ||
+      fail "$3: mean $channel differs by $difference%, beyond ±$2%"
+  done
+}
+
 # Blender as the script finds it. Without it the test is skipped (exit 77, its SKIP_RETURN_CODE),
 # or fails where the test run requires it: scripts/test.sh sets GIB_REQUIRE_BLENDER=1, since
 # scripts/install-deps.sh installs Blender there.
@@ -51,12 +63,7 @@ for line in "mean R" "mean G" "mean B" "worst 16x16 block mean" "FLIP between th
   grep -q "^$line " "$work/out.txt" || fail "no '$line' line"
 done
 grep -q "Blender's reported render time" "$work/out.txt" || fail "Blender's render time not read"
-for channel in R G B; do
-  difference=$(sed -n "s/^mean $channel .* \([-+][0-9.]*\)%$/\1/p" "$work/out.txt")
-  [ -n "$difference" ] || fail "no relative difference on the 'mean $channel' line"
-  awk -v d="$difference" -v t="$tolerance_percent" 'BEGIN { exit !(d <= t && d >= -t) }' ||
-    fail "mean $channel differs by $difference%, beyond ±$tolerance_percent%"
-done
+check_means "$work/out.txt" "$tolerance_percent" "empty box"
 
 # A scene Cycles renders differently (the chamber's Phong floor and cos² spot light): the warnings
 # are shown, and each renderer's MSE is taken against a long render of its own.
@@ -84,11 +91,7 @@ grep -q "Every part of the scene maps exactly" "$work/spheres/scene.py" ||
   fail "the spheres box does not map exactly: $(cat "$work/spheres.err")"
 grep -q "mirror.distribution = \"SHARP\"" "$work/spheres/scene.py" || fail "no sharp mirror"
 grep -q "light paths traced" "$work/spheres.txt" || fail "GI Bench traced no light paths"
-for channel in R G B; do
-  difference=$(sed -n "s/^mean $channel .* \([-+][0-9.]*\)%$/\1/p" "$work/spheres.txt")
-  awk -v d="$difference" -v t="$spheres_tolerance_percent" 'BEGIN { exit !(d <= t && d >= -t) }' ||
-    fail "spheres box: mean $channel differs by $difference%, beyond ±$spheres_tolerance_percent%"
-done
+check_means "$work/spheres.txt" "$spheres_tolerance_percent" "spheres box"
 
 # --own-truth: an exactly mapped scene measured against each renderer's own long render too.
 GIBENCH="$gibench" "$script" cornell --scene-set blocks=false --width 32 --height 24 --spp 4 \
@@ -116,11 +119,7 @@ grep -q "Every part of the scene maps exactly" "$work/outdoor/scene.py" ||
   fail "the outdoor scene does not map exactly: $(cat "$work/outdoor.err")"
 grep -q '"environment": {"width": 64, "height": 32' "$work/outdoor/scene.py" ||
   fail "the sky map is not in the exported scene"
-for channel in R G B; do
-  difference=$(sed -n "s/^mean $channel .* \([-+][0-9.]*\)%$/\1/p" "$work/outdoor.txt")
-  awk -v d="$difference" -v t="$tolerance_percent" 'BEGIN { exit !(d <= t && d >= -t) }' ||
-    fail "outdoor: mean $channel differs by $difference%, beyond ±$tolerance_percent%"
-done
+check_means "$work/outdoor.txt" "$tolerance_percent" "outdoor"
 
 # The thin lens (docs/rendering.md, "Depth of field: the thin lens"): the empty box focused on its
 # front opening (look_at's distance, 800) through a lens of radius 100, so that the back wall and
@@ -140,11 +139,7 @@ GIBENCH="$gibench" "$script" cornell --scene-set blocks=false --lens-radius 100 
 cat "$work/lens.txt"
 grep -q '"lens_radius": 100, "focus_distance": 800' "$work/lens/scene.py" ||
   fail "the lens is not in the exported scene"
-for channel in R G B; do
-  difference=$(sed -n "s/^mean $channel .* \([-+][0-9.]*\)%$/\1/p" "$work/lens.txt")
-  awk -v d="$difference" -v t="$lens_tolerance_percent" 'BEGIN { exit !(d <= t && d >= -t) }' ||
-    fail "thin lens: mean $channel differs by $difference%, beyond ±$lens_tolerance_percent%"
-done
+check_means "$work/lens.txt" "$lens_tolerance_percent" "thin lens"
 ratio=$(awk '/^MSE vs truth/ { print $4 / $5 }' "$work/lens.txt")
 awk -v r="$ratio" -v t="$lens_mse_ratio_limit" 'BEGIN { exit !(r <= t) }' ||
   fail "thin lens: GI Bench's MSE against Cycles' truth is $ratio times Cycles' own"
