@@ -11,6 +11,7 @@
 #include "realtime/render_target.h"
 #include "realtime/sh/sh_basis.h"
 #include "realtime/sh/sh_projection.h"
+#include "realtime/technique_parameters.h"
 #include "realtime/techniques/prt/prt_errors.h"
 #include "realtime/techniques/prt/prt_projection.h"
 #include "realtime/techniques/prt/prt_shared.h"
@@ -249,8 +250,7 @@ TechniqueInfo prtTechniqueInfo() {
         numericParameter("light_rotation_deg", ParameterType::kNumber, "0", -360, 360, "degrees",
                          "turn of the lighting about +y per frame before the last "
                          "(the last frame is lit by the scene's own environment)"),
-        numericParameter("seed", ParameterType::kInteger, "0", 0, 4294967295.0, "",
-                         "seed of the rays and of CPCA's k-means++")},
+        seedParameter("seed of the rays and of CPCA's k-means++")},
        SurfaceLighting::parameters()});
   SurfaceLighting::declarePasses(info.passes);
   info.passes.add(passPath({kFramePass, kLightProjectionPass}),
